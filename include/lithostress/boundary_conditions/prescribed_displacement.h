@@ -1,0 +1,54 @@
+#ifndef lithostress_boundary_conditions_prescribed_displacement_h
+#define lithostress_boundary_conditions_prescribed_displacement_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+
+#include <lithostress/base/parsed_expression.h>
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/loads/load.h>
+
+#include <memory>
+#include <vector>
+
+namespace lithostress
+{
+  /**
+   * Prescribed displacement per component per boundary part (thesis card
+   * 9): rollers (one component zero), fixed parts, or values given as
+   * functions of position, or the reference solution's displacement.
+   * Applied as constraints, after the hanging-node constraints.
+   */
+  template <int dim>
+  class PrescribedDisplacement
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
+    void
+    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+
+    /** Add the constraints at time @p time to @p constraints. */
+    void
+    apply(const DoFHandler<dim> &          dof_handler,
+          const FiniteElementSpace<dim> &  fe_space,
+          AffineConstraints<double> &      constraints,
+          const double                     time = 0) const;
+
+    /** Whether part @p id has a prescribed component. */
+    bool
+    constrains(const types::boundary_id id) const;
+
+  private:
+    struct Part
+    {
+      types::boundary_id                                  id;
+      std::array<std::unique_ptr<ParsedExpression<dim>>, dim> component;
+      std::array<bool, dim>                               from_reference;
+    };
+    std::vector<Part>              parts;
+    const ReferenceSolution<dim> *reference = nullptr;
+  };
+} // namespace lithostress
+
+#endif

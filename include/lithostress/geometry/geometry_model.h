@@ -1,0 +1,74 @@
+#ifndef lithostress_geometry_geometry_model_h
+#define lithostress_geometry_geometry_model_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/tria.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * A model geometry: builds the coarse mesh of a cross section with its
+   * material ids, named boundary parts and manifolds for curved parts, so
+   * that every later refinement places new vertices on the true geometry.
+   * Each concrete geometry declares and parses its own parameters in a
+   * subsection of `Geometry` named after it.
+   */
+  template <int dim>
+  class GeometryModel
+  {
+  public:
+    virtual ~GeometryModel() = default;
+
+    /** Parse this geometry's subsection; lengths are multiplied by
+     * @p length_scale (the `Length unit`). */
+    virtual void
+    parse_parameters(ParameterHandler &prm, const double length_scale) = 0;
+
+    /** Create the coarse mesh in the empty @p triangulation, with material,
+     * boundary and manifold ids set and manifolds attached. */
+    virtual void
+    create_coarse_mesh(
+      parallel::distributed::Triangulation<dim> &triangulation) const = 0;
+
+    /** The named boundary parts and their boundary ids. */
+    virtual std::map<std::string, types::boundary_id>
+    boundary_parts() const = 0;
+
+    /** Named regions (material ids) of the mesh, if the geometry names them
+     * (Gmsh physical groups, layers). */
+    virtual std::map<std::string, types::material_id>
+    named_regions() const
+    {
+      return {};
+    }
+  };
+
+  /**
+   * The `Geometry` section: selects one of the built-in generators or a Gmsh
+   * mesh, and the unit of the lengths given in the input.
+   */
+  template <int dim>
+  class GeometrySelector
+  {
+  public:
+    /** Declare `Geometry` with the subsections of every geometry. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Create and configure the selected geometry. */
+    static std::unique_ptr<GeometryModel<dim>>
+    create(ParameterHandler &prm);
+
+    /** The factor that converts input lengths to metres. */
+    static double
+    length_scale(ParameterHandler &prm);
+  };
+} // namespace lithostress
+
+#endif

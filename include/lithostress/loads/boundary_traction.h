@@ -1,0 +1,64 @@
+#ifndef lithostress_loads_boundary_traction_h
+#define lithostress_loads_boundary_traction_h
+
+#include <lithostress/base/parsed_expression.h>
+#include <lithostress/loads/load.h>
+
+#include <memory>
+#include <vector>
+
+namespace lithostress
+{
+  /**
+   * Distributed tractions on named boundary parts (thesis cards 7–8; edge
+   * tension and compression §6, slab pull §7.4, basal shear §7.6.1): a normal
+   * component σ_n (positive = tension, pulling outward) and a shear
+   * component τ along s = (n_y, −n_x) (the outward normal turned clockwise),
+   * each a function of position, or the traction σ_exact·n of the reference
+   * solution. Weak form ∫ (σ_n n + τ s)·v ds.
+   */
+  template <int dim>
+  class BoundaryTraction : public Load<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
+    void
+    parse_parameters(ParameterHandler &             prm,
+                     const ModelDescription<dim> &model);
+
+    /** Whether any traction is given. */
+    bool
+    empty() const
+    {
+      return parts.empty();
+    }
+
+    bool
+    acts_on_boundary(const types::boundary_id id) const override;
+    void
+    add_boundary_terms(const FEFaceValues<dim> &         fe_face_values,
+                       const types::boundary_id          id,
+                       const FEValuesExtractors::Vector &displacement,
+                       FullMatrix<double> &              cell_matrix,
+                       Vector<double> &                  cell_rhs) const override;
+
+    /** The traction vector on part @p id at @p p with outward normal @p n. */
+    Tensor<1, dim>
+    traction(const types::boundary_id id,
+             const Point<dim> &       p,
+             const Tensor<1, dim> &   n) const;
+
+  private:
+    struct Part
+    {
+      types::boundary_id                      id;
+      bool                                    from_reference;
+      std::unique_ptr<ParsedExpression<dim>>  normal, shear;
+    };
+    std::vector<Part>              parts;
+    const ReferenceSolution<dim> *reference = nullptr;
+  };
+} // namespace lithostress
+
+#endif

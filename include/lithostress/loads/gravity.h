@@ -1,0 +1,35 @@
+#ifndef lithostress_loads_gravity_h
+#define lithostress_loads_gravity_h
+
+#include <lithostress/loads/load.h>
+
+namespace lithostress
+{
+  /**
+   * Gravity: the body force −ρ g ŷ of every material (SPEC §3.2, thesis
+   * §3.7.1), weak form ∫ −ρ g v_y dx.
+   */
+  template <int dim>
+  class Gravity : public Load<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /** Returns whether gravity is switched on. */
+    bool
+    parse_parameters(ParameterHandler &prm);
+
+    void
+    add_cell_terms(const FEValues<dim> &             fe_values,
+                   const FEValuesExtractors::Vector &displacement,
+                   const Material &                  material,
+                   const ElasticModuli<dim> &        moduli,
+                   FullMatrix<double> &              cell_matrix,
+                   Vector<double> &                  cell_rhs) const override;
+
+    /** g [m s⁻²]. */
+    double acceleration = 9.81;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,82 @@
+#ifndef lithostress_loads_load_h
+#define lithostress_loads_load_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/material.h>
+
+#include <map>
+#include <string>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  template <int dim>
+  class ReferenceSolution;
+
+  /**
+   * What a load needs to know about the model when it is configured: the
+   * named boundary parts, the unit of input lengths, and the reference
+   * solution if the experiment has one (boundary data can be taken from it).
+   */
+  template <int dim>
+  struct ModelDescription
+  {
+    std::map<std::string, types::boundary_id> boundary_parts;
+    double                                    length_scale = 1.0;
+    const ReferenceSolution<dim> *            reference    = nullptr;
+
+    /** The id of boundary part @p name; InputError naming @p entry if the
+     * mesh has no such part. */
+    types::boundary_id
+    boundary_id(const std::string &name, const std::string &entry) const;
+  };
+
+  /**
+   * A load on the model: contributions to the right-hand side, and possibly
+   * to the stiffness (a Winkler foundation), from cell and boundary
+   * integrals. One class per physical load, each declaring and parsing its
+   * own parameters under `Loads`; LoadCollection wires them.
+   */
+  template <int dim>
+  class Load
+  {
+  public:
+    virtual ~Load() = default;
+
+    /** Add this load's cell integrals for a cell of @p material. */
+    virtual void
+    add_cell_terms(const FEValues<dim> &             fe_values,
+                   const FEValuesExtractors::Vector &displacement,
+                   const Material &                  material,
+                   const ElasticModuli<dim> &        moduli,
+                   FullMatrix<double> &              cell_matrix,
+                   Vector<double> &                  cell_rhs) const;
+
+    /** Whether this load integrates over boundary part @p id. */
+    virtual bool
+    acts_on_boundary(const types::boundary_id id) const;
+
+    /** Add this load's integrals over a face on boundary part @p id. */
+    virtual void
+    add_boundary_terms(const FEFaceValues<dim> &         fe_face_values,
+                       const types::boundary_id          id,
+                       const FEValuesExtractors::Vector &displacement,
+                       FullMatrix<double> &              cell_matrix,
+                       Vector<double> &                  cell_rhs) const;
+
+    /** Whether the load changes the stiffness matrix. */
+    virtual bool
+    changes_stiffness() const
+    {
+      return false;
+    }
+  };
+} // namespace lithostress
+
+#endif

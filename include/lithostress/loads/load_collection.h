@@ -1,0 +1,41 @@
+#ifndef lithostress_loads_load_collection_h
+#define lithostress_loads_load_collection_h
+
+#include <lithostress/loads/load.h>
+
+#include <memory>
+#include <vector>
+
+namespace lithostress
+{
+  /**
+   * The `Loads` section: every load of the model. A new load is one class
+   * derived from Load with its own parameters, declared and created here.
+   */
+  template <int dim>
+  class LoadCollection
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
+
+    void
+    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+
+    /** The active loads. */
+    const std::vector<std::unique_ptr<Load<dim>>> &
+    loads() const
+    {
+      return active;
+    }
+
+    /** Whether any load integrates over boundary part @p id. */
+    bool
+    acts_on_boundary(const types::boundary_id id) const;
+
+  private:
+    std::vector<std::unique_ptr<Load<dim>>> active;
+  };
+} // namespace lithostress
+
+#endif

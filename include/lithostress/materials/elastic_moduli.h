@@ -1,0 +1,74 @@
+#ifndef lithostress_materials_elastic_moduli_h
+#define lithostress_materials_elastic_moduli_h
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <lithostress/materials/material.h>
+
+#include <string>
+
+namespace lithostress
+{
+  /**
+   * The 2-D idealisation of the third direction (thesis card NST, SPEC §2):
+   * plane strain (ε_zz = 0, σ_zz reported) or plane stress (σ_zz = 0).
+   */
+  enum class PlaneState
+  {
+    plane_strain,
+    plane_stress
+  };
+
+  /** Parse "plane strain" / "plane stress". */
+  PlaneState
+  parse_plane_state(const std::string &text);
+
+  /**
+   * Isotropic linear elasticity of one material in the chosen plane state
+   * (SPEC §3.1): the in-plane stiffness tensor, its inverse, and the
+   * out-of-plane stress σ_zz. In plane stress the in-plane law is the 3-D
+   * law with λ replaced by λ* = 2λμ/(λ + 2μ).
+   */
+  template <int dim>
+  class ElasticModuli
+  {
+  public:
+    ElasticModuli(const Material &material, const PlaneState plane_state);
+
+    /** The in-plane stiffness C: σ = C ε. */
+    const SymmetricTensor<4, dim> &
+    stiffness() const
+    {
+      return C;
+    }
+
+    /** The in-plane compliance C⁻¹: ε = C⁻¹ σ. */
+    SymmetricTensor<4, dim>
+    compliance() const;
+
+    /** σ = C ε. */
+    SymmetricTensor<2, dim>
+    stress(const SymmetricTensor<2, dim> &strain) const
+    {
+      return C * strain;
+    }
+
+    /** σ_zz for in-plane strain @p strain: λ tr ε (plane strain), 0 (plane
+     * stress). */
+    double
+    sigma_zz(const SymmetricTensor<2, dim> &strain) const;
+
+    /** Effective in-plane Lamé λ (λ or λ*) and μ. */
+    double lambda_in_plane, mu;
+
+    /** 3-D λ (σ_zz in plane strain). */
+    double lambda_3d;
+
+    PlaneState plane_state;
+
+  private:
+    SymmetricTensor<4, dim> C;
+  };
+} // namespace lithostress
+
+#endif

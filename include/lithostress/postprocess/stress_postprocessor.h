@@ -1,0 +1,46 @@
+#ifndef lithostress_postprocess_stress_postprocessor_h
+#define lithostress_postprocess_stress_postprocessor_h
+
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/material.h>
+
+namespace lithostress
+{
+  /**
+   * Turns the finite element solution into the fields written for
+   * ParaView: the displacement (the sum of all displacement fields, since
+   * FE_Nothing fields are zero), the in-plane stress tensor and σ_zz
+   * (tension positive), evaluated with the moduli of each cell's material.
+   */
+  template <int dim>
+  class StressPostprocessor : public DataPostprocessor<dim>
+  {
+  public:
+    StressPostprocessor(const MaterialLibrary &materials,
+                        const PlaneState       plane_state,
+                        const unsigned int     n_fields);
+
+    void
+    evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<dim> &inputs,
+      std::vector<Vector<double>> &computed_quantities) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
+
+    UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const MaterialLibrary &materials;
+    const PlaneState       plane_state;
+    const unsigned int     n_fields;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,126 @@
+#ifndef lithostress_simulator_h
+#define lithostress_simulator_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <lithostress/boundary_conditions/prescribed_displacement.h>
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/discretization/linear_system.h>
+#include <lithostress/geometry/geometry_model.h>
+#include <lithostress/loads/load_collection.h>
+#include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/material.h>
+#include <lithostress/output/run_log.h>
+#include <lithostress/output/solution_output.h>
+#include <lithostress/postprocess/convergence_study.h>
+#include <lithostress/refinement/mesh_refinement.h>
+#include <lithostress/reference_solutions/reference_solution.h>
+#include <lithostress/solvers/linear_solver.h>
+
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * The lithostress simulator: wires geometry, materials, loads, boundary
+   * conditions, discretization, solver, refinement and output, in the spirit
+   * of deal.II step-40 and ASPECT's Simulator. The constructor reads and
+   * checks the whole model — so that bad input is reported before anything
+   * is written — and run() performs the refinement cycles: set up, assemble,
+   * solve, postprocess, output, refine.
+   */
+  template <int dim>
+  class Simulator
+  {
+  public:
+    /** Declare every parameter of the program (see ParameterFile). */
+    static void
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
+
+    /** Read the model from @p prm and check it against the mesh. */
+    Simulator(const MPI_Comm communicator, ParameterHandler &prm);
+
+    /** Run all cycles; writes into the output directory. */
+    void
+    run();
+
+    /** The convergence table after run(). */
+    const ConvergenceStudy &
+    convergence_study() const
+    {
+      return study;
+    }
+
+    /** Timings and sizes of the last cycle, for the benchmark. */
+    struct CycleStatistics
+    {
+      unsigned long long dofs = 0, cells = 0;
+      SolverReport       solver;
+      double             setup_time = 0, assemble_time = 0, solve_time = 0;
+    };
+
+    const CycleStatistics &
+    last_cycle() const
+    {
+      return statistics;
+    }
+
+  private:
+    void
+    setup_dofs();
+    void
+    assemble_system();
+    void
+    solve();
+    void
+    postprocess(const unsigned int cycle);
+    void
+    check_output_directory() const;
+    /** Read and check the model (the constructor's work). */
+    void
+    read_model();
+    /** The refinement cycles (run()'s work). */
+    void
+    run_cycles();
+
+    MPI_Comm          communicator;
+    ParameterHandler &prm;
+    RunLog            log;
+    std::ostringstream timer_text;
+    ConditionalOStream timer_stream;
+    std::unique_ptr<TimerOutput> timer;
+
+    std::string                        output_directory;
+    PlaneState                         plane_state;
+    double                             length_scale;
+    std::unique_ptr<GeometryModel<dim>> geometry;
+    parallel::distributed::Triangulation<dim> triangulation;
+    MaterialLibrary                    materials;
+    std::unique_ptr<ReferenceSolution<dim>> reference;
+    LoadCollection<dim>                loads;
+    PrescribedDisplacement<dim>        prescribed_displacement;
+    std::unique_ptr<FiniteElementSpace<dim>> fe_space;
+    DoFHandler<dim>                    dof_handler;
+    LinearSystem<dim>                  system;
+    TrilinosWrappers::MPI::Vector      solution;
+    std::unique_ptr<LinearSolver<dim>> linear_solver;
+    MeshRefinement<dim>                refinement;
+    SolutionOutput<dim>                solution_output;
+    std::vector<Point<dim>>            points;
+    ConvergenceStudy                   study;
+    CycleStatistics                    statistics;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,61 @@
+#ifndef lithostress_solvers_amg_solver_h
+#define lithostress_solvers_amg_solver_h
+
+#include <deal.II/lac/trilinos_precondition.h>
+
+#include <lithostress/solvers/linear_solver.h>
+
+namespace lithostress
+{
+  /**
+   * Conjugate gradients preconditioned by Trilinos ML smoothed-aggregation
+   * AMG with all rigid-body modes as the near-null space and settings for
+   * vector-valued Q2 elasticity (Chebyshev smoothing, higher-order element
+   * flag). Stops when ‖r‖ ≤ tol ‖f‖ (unpreconditioned residual).
+   */
+  template <int dim>
+  class AMGSolver : public LinearSolver<dim>
+  {
+  public:
+    struct Settings
+    {
+      double       relative_tolerance = 1e-10;
+      unsigned int max_iterations     = 1000;
+      unsigned int smoother_sweeps    = 2;
+      double       aggregation_threshold = 0.02;
+    };
+
+    explicit AMGSolver(const Settings &settings);
+
+    SolverReport
+    solve(const DoFHandler<dim> &         dof_handler,
+          const FiniteElementSpace<dim> &fe_space,
+          const LinearSystem<dim> &      system,
+          TrilinosWrappers::MPI::Vector &solution) override;
+
+  private:
+    Settings settings;
+  };
+
+  /**
+   * A sparse direct solver (Trilinos Amesos, KLU by default) for small or
+   * ill-conditioned problems.
+   */
+  template <int dim>
+  class DirectSolver : public LinearSolver<dim>
+  {
+  public:
+    explicit DirectSolver(const std::string &amesos_solver);
+
+    SolverReport
+    solve(const DoFHandler<dim> &         dof_handler,
+          const FiniteElementSpace<dim> &fe_space,
+          const LinearSystem<dim> &      system,
+          TrilinosWrappers::MPI::Vector &solution) override;
+
+  private:
+    std::string amesos_solver;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,75 @@
+#include <deal.II/base/utilities.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/base/parsed_expression.h>
+
+#include <map>
+#include <sstream>
+
+namespace lithostress
+{
+  template <int dim>
+  ParsedExpression<dim>::ParsedExpression(const std::string &text,
+                                          const std::string &constants_text,
+                                          const std::string &entry)
+    : expression(text)
+  {
+    std::map<std::string, double> constants;
+    for (const std::string &item : split_list(constants_text))
+      {
+        const auto equal = item.find('=');
+        double     value = 0;
+        bool       ok    = (equal != std::string::npos);
+        if (ok)
+          {
+            try
+              {
+                std::size_t       used = 0;
+                const std::string number =
+                  Utilities::trim(item.substr(equal + 1));
+                value = std::stod(number, &used);
+                ok    = (used == number.size());
+              }
+            catch (const std::exception &)
+              {
+                ok = false;
+              }
+          }
+        if (!ok)
+          throw_input_error(entry,
+                            "constant <" + item + "> is not of the form "
+                                                  "name=number");
+        constants[Utilities::trim(item.substr(0, equal))] = value;
+      }
+    const std::string variables = (dim == 2) ? "x,y,t" : "x,y,z,t";
+    try
+      {
+        function = std::make_unique<FunctionParser<dim>>(1);
+        function->initialize(variables, expression, constants, true);
+        function->value(Point<dim>());
+      }
+    catch (const ExceptionBase &exc)
+      {
+        std::ostringstream message;
+        exc.print_info(message);
+        std::string m = message.str();
+        for (char &c : m)
+          if (c == '\n')
+            c = ' ';
+        throw_input_error(entry,
+                          "cannot parse the expression <" + expression +
+                            ">: " + Utilities::trim(m));
+      }
+  }
+
+  template <int dim>
+  double
+  ParsedExpression<dim>::value(const Point<dim> &p, const double time) const
+  {
+    function->set_time(time);
+    return function->value(p);
+  }
+
+  template class ParsedExpression<2>;
+} // namespace lithostress

@@ -1,0 +1,167 @@
+#include <deal.II/base/function.h>
+#include <deal.II/fe/component_mask.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/boundary_conditions/prescribed_displacement.h>
+#include <lithostress/reference_solutions/reference_solution.h>
+
+namespace lithostress
+{
+  namespace
+  {
+    const char *component_names[3] = {"x", "y", "z"};
+
+    /** The prescribed displacement of one part, repeated for each field. */
+    template <int dim>
+    class PartDisplacement : public Function<dim>
+    {
+    public:
+      PartDisplacement(
+        const std::array<std::unique_ptr<ParsedExpression<dim>>, dim> &c,
+        const std::array<bool, dim> &  from_reference,
+        const ReferenceSolution<dim> *reference,
+        const unsigned int            n_fields,
+        const double                  time)
+        : Function<dim>(dim * n_fields)
+        , c(c)
+        , from_reference(from_reference)
+        , reference(reference)
+        , t(time)
+      {}
+
+      double
+      value(const Point<dim> &p, const unsigned int component) const override
+      {
+        const unsigned int d = component % dim;
+        if (from_reference[d])
+          return reference->displacement(p)[d];
+        return c[d] ? c[d]->value(p, t) : 0.0;
+      }
+
+    private:
+      const std::array<std::unique_ptr<ParsedExpression<dim>>, dim> &c;
+      const std::array<bool, dim> &                                  from_reference;
+      const ReferenceSolution<dim> *                                 reference;
+      const double                                                   t;
+    };
+  } // namespace
+
+  template <int dim>
+  void
+  PrescribedDisplacement<dim>::declare_parameters(ParameterHandler &prm,
+                                                  ParameterHandler *first_pass)
+  {
+    const std::vector<std::string> names =
+      ParameterFile::names_from(first_pass,
+                                {"Boundary conditions"},
+                                "Prescribed displacement parts",
+                                {"base"});
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry("Prescribed displacement parts", "", Patterns::Anything(),
+                      "Comma separated boundary parts with a prescribed "
+                      "displacement component; each gets a subsection.");
+    for (const std::string &name : names)
+      {
+        prm.enter_subsection(name);
+        for (unsigned int d = 0; d < dim; ++d)
+          prm.declare_entry(component_names[d], "", Patterns::Anything(),
+                            std::string("Prescribed ") + component_names[d] +
+                              " displacement [m] as a function of x, y [m] "
+                              "and t [s]; empty = free; `reference` = the "
+                              "reference solution's.");
+        prm.declare_entry("Constants", "", Patterns::Anything(),
+                          "Constants for the expressions: name=value, ...");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  PrescribedDisplacement<dim>::parse_parameters(
+    ParameterHandler &           prm,
+    const ModelDescription<dim> &model)
+  {
+    parts.clear();
+    reference = model.reference;
+    prm.enter_subsection("Boundary conditions");
+    for (const std::string &name :
+         split_list(prm.get("Prescribed displacement parts")))
+      {
+        Part part;
+        part.id = model.boundary_id(
+          name, "Boundary conditions/Prescribed displacement parts");
+        prm.enter_subsection(name);
+        const std::string constants = prm.get("Constants");
+        bool              any       = false;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const std::string entry = "Boundary conditions/" + name + "/" +
+                                      component_names[d];
+            const std::string text =
+              Utilities::trim(prm.get(component_names[d]));
+            part.from_reference[d] = (text == "reference");
+            if (part.from_reference[d] && reference == nullptr)
+              throw_input_error(entry,
+                                "is `reference` but Convergence "
+                                "study/Reference solution is none");
+            if (!text.empty() && !part.from_reference[d])
+              part.component[d] =
+                std::make_unique<ParsedExpression<dim>>(text, constants, entry);
+            any = any || !text.empty();
+          }
+        prm.leave_subsection();
+        if (!any)
+          throw_input_error("Boundary conditions/" + name,
+                            "prescribes no component (set x and/or y)");
+        parts.push_back(std::move(part));
+      }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  bool
+  PrescribedDisplacement<dim>::constrains(const types::boundary_id id) const
+  {
+    for (const Part &part : parts)
+      if (part.id == id)
+        return true;
+    return false;
+  }
+
+  template <int dim>
+  void
+  PrescribedDisplacement<dim>::apply(const DoFHandler<dim> &         dof_handler,
+                                     const FiniteElementSpace<dim> &fe_space,
+                                     AffineConstraints<double> &     constraints,
+                                     const double                    time) const
+  {
+    const unsigned int n_components =
+      fe_space.fe_collection().n_components();
+    for (const Part &part : parts)
+      {
+        std::vector<bool> mask(n_components, false);
+        for (unsigned int c = 0; c < n_components; ++c)
+          {
+            const unsigned int d = c % dim;
+            mask[c] = part.from_reference[d] || part.component[d] != nullptr;
+          }
+        const PartDisplacement<dim> function(part.component,
+                                             part.from_reference,
+                                             reference,
+                                             fe_space.n_fields(),
+                                             time);
+        std::map<types::boundary_id, const Function<dim> *> functions = {
+          {part.id, &function}};
+        VectorTools::interpolate_boundary_values(fe_space.mapping_collection(),
+                                                 dof_handler,
+                                                 functions,
+                                                 constraints,
+                                                 ComponentMask(mask));
+      }
+  }
+
+  template class PrescribedDisplacement<2>;
+} // namespace lithostress

@@ -1,0 +1,131 @@
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+
+#include <lithostress/discretization/elastic_assembler.h>
+
+namespace lithostress
+{
+  template <int dim>
+  ElasticAssembler<dim>::ElasticAssembler(
+    const FiniteElementSpace<dim> &fe_space,
+    const MaterialLibrary &        materials,
+    const PlaneState               plane_state,
+    const LoadCollection<dim> &    loads)
+    : fe_space(fe_space)
+    , materials(materials)
+    , plane_state(plane_state)
+    , loads(loads)
+  {}
+
+  template <int dim>
+  ElasticModuli<dim>
+  ElasticAssembler<dim>::moduli(const types::material_id id) const
+  {
+    return ElasticModuli<dim>(materials(id), plane_state);
+  }
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::assemble(const DoFHandler<dim> &dof_handler,
+                                  LinearSystem<dim> &    system,
+                                  const bool             with_matrix) const
+  {
+    hp::FEValues<dim>     hp_fe_values(fe_space.mapping_collection(),
+                                   fe_space.fe_collection(),
+                                   fe_space.cell_quadrature(),
+                                   update_values | update_gradients |
+                                     update_quadrature_points |
+                                     update_JxW_values);
+    hp::FEFaceValues<dim> hp_face_values(fe_space.mapping_collection(),
+                                         fe_space.fe_collection(),
+                                         fe_space.face_quadrature(),
+                                         update_values |
+                                           update_quadrature_points |
+                                           update_normal_vectors |
+                                           update_JxW_values);
+
+    std::map<types::material_id, ElasticModuli<dim>> moduli_of;
+    for (const Material &m : materials.materials())
+      moduli_of.emplace(m.id, ElasticModuli<dim>(m, plane_state));
+
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_rhs;
+    std::vector<types::global_dof_index> dofs;
+    std::vector<SymmetricTensor<2, dim>> strain;
+    std::vector<SymmetricTensor<2, dim>> stress;
+
+    if (with_matrix)
+      system.matrix = 0;
+    system.rhs = 0;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          hp_fe_values.reinit(cell);
+          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
+          const unsigned int   n         = fe_values.dofs_per_cell;
+          const FEValuesExtractors::Vector u =
+            fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+          const Material &          material = materials(cell->material_id());
+          const ElasticModuli<dim> &moduli   = moduli_of.at(material.id);
+          const SymmetricTensor<4, dim> &C   = moduli.stiffness();
+
+          cell_matrix.reinit(n, n);
+          cell_rhs.reinit(n);
+          strain.resize(n);
+          stress.resize(n);
+
+          if (with_matrix)
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const double JxW = fe_values.JxW(q);
+                for (unsigned int i = 0; i < n; ++i)
+                  {
+                    strain[i] = fe_values[u].symmetric_gradient(i, q);
+                    stress[i] = C * strain[i];
+                  }
+                for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int j = 0; j <= i; ++j)
+                    cell_matrix(i, j) += (stress[i] * strain[j]) * JxW;
+              }
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = i + 1; j < n; ++j)
+              cell_matrix(i, j) = cell_matrix(j, i);
+
+          for (const auto &load : loads.loads())
+            load->add_cell_terms(
+              fe_values, u, material, moduli, cell_matrix, cell_rhs);
+
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                loads.acts_on_boundary(cell->face(f)->boundary_id()))
+              {
+                hp_face_values.reinit(cell, f);
+                const FEFaceValues<dim> &face_values =
+                  hp_face_values.get_present_fe_values();
+                for (const auto &load : loads.loads())
+                  if (load->acts_on_boundary(cell->face(f)->boundary_id()))
+                    load->add_boundary_terms(face_values,
+                                             cell->face(f)->boundary_id(),
+                                             u,
+                                             cell_matrix,
+                                             cell_rhs);
+              }
+
+          dofs.resize(n);
+          cell->get_dof_indices(dofs);
+          if (with_matrix)
+            system.constraints.distribute_local_to_global(
+              cell_matrix, cell_rhs, dofs, system.matrix, system.rhs);
+          else
+            system.constraints.distribute_local_to_global(cell_rhs,
+                                                          dofs,
+                                                          system.rhs);
+        }
+    if (with_matrix)
+      system.matrix.compress(VectorOperation::add);
+    system.rhs.compress(VectorOperation::add);
+  }
+
+  template class ElasticAssembler<2>;
+} // namespace lithostress

@@ -1,0 +1,345 @@
+#include <deal.II/grid/grid_generator.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/geometry/rectangular_geometries.h>
+
+#include <cmath>
+
+namespace lithostress
+{
+  std::map<std::string, types::boundary_id>
+  rectangle_boundary_parts()
+  {
+    // The ids of GridGenerator's colorized rectangle.
+    return {{"left", 0}, {"right", 1}, {"base", 2}, {"top", 3}};
+  }
+
+  namespace
+  {
+    void
+    make_rectangle(Triangulation<2> &       tria,
+                   const Point<2> &         p0,
+                   const Point<2> &         p1,
+                   const unsigned int       nx,
+                   const unsigned int       ny)
+    {
+      GridGenerator::subdivided_hyper_rectangle(tria, {nx, ny}, p0, p1, true);
+      // Colorizing also numbers the cells; the block is one material.
+      for (const auto &cell : tria.active_cell_iterators())
+        cell->set_material_id(0);
+    }
+
+    unsigned int
+    positive_count(ParameterHandler &prm,
+                   const std::string &entry,
+                   const std::string &where)
+    {
+      const long value = prm.get_integer(entry);
+      if (value < 1)
+        throw_input_error(where + entry, "must be at least 1");
+      return static_cast<unsigned int>(value);
+    }
+
+    double
+    positive_length(ParameterHandler & prm,
+                    const std::string &entry,
+                    const std::string &where,
+                    const double       scale)
+    {
+      const double value = prm.get_double(entry) * scale;
+      if (!(value > 0))
+        throw_input_error(where + entry, "must be positive");
+      return value;
+    }
+  } // namespace
+
+  // ------------------------------------------------------------ block
+  template <int dim>
+  void
+  RectangularBlock<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Rectangular block");
+    prm.declare_entry("X extent",
+                      "0, 10",
+                      Patterns::List(Patterns::Double(), 2, 2),
+                      "Left and right x of the block [length unit].");
+    prm.declare_entry("Y extent",
+                      "-10, 0",
+                      Patterns::List(Patterns::Double(), 2, 2),
+                      "Base and top y of the block [length unit].");
+    prm.declare_entry("Cells",
+                      "1, 1",
+                      Patterns::List(Patterns::Integer(1), 2, 2),
+                      "Coarse cells in x and in y.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  RectangularBlock<dim>::parse_parameters(ParameterHandler &prm,
+                                          const double      scale)
+  {
+    prm.enter_subsection("Rectangular block");
+    const auto xs = Utilities::string_to_double(split_list(prm.get("X extent")));
+    const auto ys = Utilities::string_to_double(split_list(prm.get("Y extent")));
+    const auto n  = Utilities::string_to_int(split_list(prm.get("Cells")));
+    prm.leave_subsection();
+    x0 = xs[0] * scale;
+    x1 = xs[1] * scale;
+    y0 = ys[0] * scale;
+    y1 = ys[1] * scale;
+    nx = n[0];
+    ny = n[1];
+    if (!(x1 > x0))
+      throw_input_error("Geometry/Rectangular block/X extent",
+                        "right must be greater than left");
+    if (!(y1 > y0))
+      throw_input_error("Geometry/Rectangular block/Y extent",
+                        "top must be greater than base");
+  }
+
+  template <int dim>
+  void
+  RectangularBlock<dim>::create_coarse_mesh(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    make_rectangle(tria, Point<2>(x0, y0), Point<2>(x1, y1), nx, ny);
+  }
+
+  template <int dim>
+  std::map<std::string, types::boundary_id>
+  RectangularBlock<dim>::boundary_parts() const
+  {
+    return rectangle_boundary_parts();
+  }
+
+  // ------------------------------------------------------------ cantilever
+  template <int dim>
+  void
+  CantileverBeam<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Cantilever beam");
+    prm.declare_entry("Length",
+                      "10",
+                      Patterns::Double(),
+                      "Length l of the beam, x in [0, l] [length unit].");
+    prm.declare_entry("Depth",
+                      "2.5",
+                      Patterns::Double(),
+                      "Depth 2c of the beam, y in [-c, c] [length unit].");
+    prm.declare_entry("Cells along length",
+                      "4",
+                      Patterns::Integer(),
+                      "Coarse cells along the beam.");
+    prm.declare_entry("Cells through depth",
+                      "1",
+                      Patterns::Integer(),
+                      "Coarse cells through the depth.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  CantileverBeam<dim>::parse_parameters(ParameterHandler &prm,
+                                        const double      scale)
+  {
+    const std::string where = "Geometry/Cantilever beam/";
+    prm.enter_subsection("Cantilever beam");
+    length        = positive_length(prm, "Length", where, scale);
+    depth         = positive_length(prm, "Depth", where, scale);
+    cells_along   = positive_count(prm, "Cells along length", where);
+    cells_through = positive_count(prm, "Cells through depth", where);
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  CantileverBeam<dim>::create_coarse_mesh(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    make_rectangle(tria,
+                   Point<2>(0, -depth / 2),
+                   Point<2>(length, depth / 2),
+                   cells_along,
+                   cells_through);
+  }
+
+  template <int dim>
+  std::map<std::string, types::boundary_id>
+  CantileverBeam<dim>::boundary_parts() const
+  {
+    return rectangle_boundary_parts();
+  }
+
+  // ------------------------------------------------------------ thin plate
+  template <int dim>
+  void
+  ThinPlate<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Thin plate");
+    prm.declare_entry("Length",
+                      "1000",
+                      Patterns::Double(),
+                      "Plate length L, x in [0, L] [length unit].");
+    prm.declare_entry("Thickness",
+                      "20",
+                      Patterns::Double(),
+                      "Plate thickness h, y in [-h, 0] [length unit].");
+    prm.declare_entry("Cells through thickness",
+                      "1",
+                      Patterns::Integer(),
+                      "Coarse cells through the thickness; the cells along "
+                      "the plate follow from L/h so that cells are square.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  ThinPlate<dim>::parse_parameters(ParameterHandler &prm, const double scale)
+  {
+    const std::string where = "Geometry/Thin plate/";
+    prm.enter_subsection("Thin plate");
+    length        = positive_length(prm, "Length", where, scale);
+    thickness     = positive_length(prm, "Thickness", where, scale);
+    cells_through = positive_count(prm, "Cells through thickness", where);
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  ThinPlate<dim>::create_coarse_mesh(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    const unsigned int along = std::max<unsigned int>(
+      1, std::lround(length / thickness * cells_through));
+    make_rectangle(tria,
+                   Point<2>(0, -thickness),
+                   Point<2>(length, 0),
+                   along,
+                   cells_through);
+  }
+
+  template <int dim>
+  std::map<std::string, types::boundary_id>
+  ThinPlate<dim>::boundary_parts() const
+  {
+    return rectangle_boundary_parts();
+  }
+
+  // ------------------------------------------------------------ layered box
+  template <int dim>
+  void
+  LayeredBox<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Layered box");
+    prm.declare_entry("Width",
+                      "100",
+                      Patterns::Double(),
+                      "Width W of the box, x in [0, W] [length unit].");
+    prm.declare_entry("Layer interfaces",
+                      "0, -10, -20",
+                      Patterns::List(Patterns::Double(), 2),
+                      "Heights y of the top, of each interface and of the base, "
+                      "from the top down [length unit].");
+    prm.declare_entry("Layer names",
+                      "upper, lower",
+                      Patterns::List(Patterns::Anything()),
+                      "Name of each layer, top first; layer i has material "
+                      "id i and is a region of this name.");
+    prm.declare_entry("Cells per layer",
+                      "1, 1",
+                      Patterns::List(Patterns::Integer(1)),
+                      "Coarse cells through each layer.");
+    prm.declare_entry("Cells across",
+                      "10",
+                      Patterns::Integer(),
+                      "Coarse cells across the width.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  LayeredBox<dim>::parse_parameters(ParameterHandler &prm, const double scale)
+  {
+    const std::string where = "Geometry/Layered box/";
+    prm.enter_subsection("Layered box");
+    width = positive_length(prm, "Width", where, scale);
+    interfaces =
+      Utilities::string_to_double(split_list(prm.get("Layer interfaces")));
+    for (double &y : interfaces)
+      y *= scale;
+    layer_names = split_list(prm.get("Layer names"));
+    const auto counts =
+      Utilities::string_to_int(split_list(prm.get("Cells per layer")));
+    cells_across = positive_count(prm, "Cells across", where);
+    prm.leave_subsection();
+
+    const unsigned int n_layers = interfaces.size() - 1;
+    for (unsigned int i = 0; i < n_layers; ++i)
+      if (!(interfaces[i] > interfaces[i + 1]))
+        throw_input_error(where + "Layer interfaces",
+                          "heights must decrease from the top down");
+    if (layer_names.size() != n_layers)
+      throw_input_error(where + "Layer names",
+                        "needs one name per layer (" +
+                          std::to_string(n_layers) + ")");
+    if (counts.size() != n_layers)
+      throw_input_error(where + "Cells per layer",
+                        "needs one count per layer (" +
+                          std::to_string(n_layers) + ")");
+    cells_per_layer.assign(counts.begin(), counts.end());
+  }
+
+  template <int dim>
+  void
+  LayeredBox<dim>::create_coarse_mesh(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    std::vector<std::vector<double>> steps(2);
+    steps[0].assign(cells_across, width / cells_across);
+    // Steps in y go from the base up.
+    for (int layer = static_cast<int>(cells_per_layer.size()) - 1; layer >= 0;
+         --layer)
+      {
+        const double thickness = interfaces[layer] - interfaces[layer + 1];
+        for (unsigned int c = 0; c < cells_per_layer[layer]; ++c)
+          steps[1].push_back(thickness / cells_per_layer[layer]);
+      }
+    GridGenerator::subdivided_hyper_rectangle(tria,
+                                              steps,
+                                              Point<2>(0, interfaces.back()),
+                                              Point<2>(width,
+                                                       interfaces.front()),
+                                              true);
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const double y = cell->center()[1];
+        for (unsigned int layer = 0; layer + 1 < interfaces.size(); ++layer)
+          if (y < interfaces[layer] && y > interfaces[layer + 1])
+            cell->set_material_id(layer);
+      }
+  }
+
+  template <int dim>
+  std::map<std::string, types::boundary_id>
+  LayeredBox<dim>::boundary_parts() const
+  {
+    return rectangle_boundary_parts();
+  }
+
+  template <int dim>
+  std::map<std::string, types::material_id>
+  LayeredBox<dim>::named_regions() const
+  {
+    std::map<std::string, types::material_id> regions;
+    for (unsigned int i = 0; i < layer_names.size(); ++i)
+      regions[layer_names[i]] = i;
+    return regions;
+  }
+
+  template class RectangularBlock<2>;
+  template class CantileverBeam<2>;
+  template class ThinPlate<2>;
+  template class LayeredBox<2>;
+} // namespace lithostress

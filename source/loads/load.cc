@@ -1,0 +1,52 @@
+#include <lithostress/base/input_error.h>
+#include <lithostress/loads/load.h>
+
+namespace lithostress
+{
+  template <int dim>
+  types::boundary_id
+  ModelDescription<dim>::boundary_id(const std::string &name,
+                                     const std::string &entry) const
+  {
+    const auto it = boundary_parts.find(name);
+    if (it == boundary_parts.end())
+      {
+        std::string known;
+        for (const auto &part : boundary_parts)
+          known += (known.empty() ? "" : ", ") + part.first;
+        throw_input_error(entry,
+                          "the mesh has no boundary part <" + name +
+                            "> (it has: " + known + ")");
+      }
+    return it->second;
+  }
+
+  template <int dim>
+  void
+  Load<dim>::add_cell_terms(const FEValues<dim> &,
+                            const FEValuesExtractors::Vector &,
+                            const Material &,
+                            const ElasticModuli<dim> &,
+                            FullMatrix<double> &,
+                            Vector<double> &) const
+  {}
+
+  template <int dim>
+  bool
+  Load<dim>::acts_on_boundary(const types::boundary_id) const
+  {
+    return false;
+  }
+
+  template <int dim>
+  void
+  Load<dim>::add_boundary_terms(const FEFaceValues<dim> &,
+                                const types::boundary_id,
+                                const FEValuesExtractors::Vector &,
+                                FullMatrix<double> &,
+                                Vector<double> &) const
+  {}
+
+  template struct ModelDescription<2>;
+  template class Load<2>;
+} // namespace lithostress

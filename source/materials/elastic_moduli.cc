@@ -1,0 +1,55 @@
+#include <lithostress/base/input_error.h>
+#include <lithostress/materials/elastic_moduli.h>
+
+namespace lithostress
+{
+  PlaneState
+  parse_plane_state(const std::string &text)
+  {
+    if (text == "plane strain")
+      return PlaneState::plane_strain;
+    if (text == "plane stress")
+      return PlaneState::plane_stress;
+    throw_input_error("Plane state",
+                      "<" + text + "> is neither plane strain nor plane stress");
+  }
+
+  template <int dim>
+  ElasticModuli<dim>::ElasticModuli(const Material &   material,
+                                    const PlaneState plane_state)
+    : mu(material.shear_modulus())
+    , lambda_3d(material.lame_lambda())
+    , plane_state(plane_state)
+  {
+    lambda_in_plane = (plane_state == PlaneState::plane_strain || dim == 3) ?
+                        lambda_3d :
+                        2.0 * lambda_3d * mu / (lambda_3d + 2.0 * mu);
+    const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
+    C = lambda_in_plane * outer_product(I, I) +
+        2.0 * mu * identity_tensor<dim>();
+  }
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  ElasticModuli<dim>::compliance() const
+  {
+    // Inverse of λ I⊗I + 2μ 𝕀 is (1/2μ)(𝕀 − λ/(dim λ + 2μ) I⊗I).
+    const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
+    return (1.0 / (2.0 * mu)) *
+           (identity_tensor<dim>() -
+            lambda_in_plane / (dim * lambda_in_plane + 2.0 * mu) *
+              outer_product(I, I));
+  }
+
+  template <int dim>
+  double
+  ElasticModuli<dim>::sigma_zz(const SymmetricTensor<2, dim> &strain) const
+  {
+    if (plane_state == PlaneState::plane_stress || dim == 3)
+      return 0.0;
+    return lambda_3d * trace(strain);
+  }
+
+  template class ElasticModuli<2>;
+  template class ElasticModuli<3>;
+} // namespace lithostress

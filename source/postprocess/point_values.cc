@@ -1,0 +1,126 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/cell_id.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/postprocess/point_values.h>
+
+namespace lithostress
+{
+  template <int dim>
+  std::vector<PointValue<dim>>
+  evaluate_at_points(const DoFHandler<dim> &               dof_handler,
+                     const FiniteElementSpace<dim> &      fe_space,
+                     const MaterialLibrary &              materials,
+                     const PlaneState                     plane_state,
+                     const TrilinosWrappers::MPI::Vector &solution,
+                     const std::vector<Point<dim>> &      points)
+  {
+    const unsigned int  n_values = dim + dim * dim + 1 + 1;
+    std::vector<double> local(points.size() * n_values, 0.0);
+    const MPI_Comm comm = dof_handler.get_communicator();
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        // The first owned cell (in CellId order) that contains the point;
+        // of all ranks' candidates the smallest CellId evaluates, so that
+        // the result does not depend on the partition.
+        typename DoFHandler<dim>::active_cell_iterator cell;
+        Point<dim>                                     unit;
+        bool                                           found = false;
+        for (const auto &c : dof_handler.active_cell_iterators())
+          if (c->is_locally_owned())
+            {
+              const auto box = c->bounding_box();
+              const double margin = 0.1 * c->diameter();
+              bool         near   = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                near = near &&
+                       points[k][d] >= box.lower_bound(d) - margin &&
+                       points[k][d] <= box.upper_bound(d) + margin;
+              if (!near)
+                continue;
+              try
+                {
+                  unit = fe_space.mapping().transform_real_to_unit_cell(
+                    c, points[k]);
+                }
+              catch (const typename Mapping<dim>::ExcTransformationFailed &)
+                {
+                  continue;
+                }
+              if (GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-10))
+                {
+                  cell  = c;
+                  found = true;
+                  break;
+                }
+            }
+        const std::vector<std::string> candidates = Utilities::MPI::all_gather(
+          comm, found ? cell->id().to_string() : std::string());
+        int winner = -1;
+        for (unsigned int r = 0; r < candidates.size(); ++r)
+          if (!candidates[r].empty() &&
+              (winner < 0 || CellId(candidates[r]) < CellId(candidates[winner])))
+            winner = r;
+        if (winner < 0)
+          throw InputError("the point (" + std::to_string(points[k][0]) +
+                           ", " + std::to_string(points[k][1]) +
+                           ") [m] is outside the mesh");
+        if (static_cast<unsigned int>(winner) !=
+            Utilities::MPI::this_mpi_process(comm))
+          continue;
+        const auto &             fe = cell->get_fe();
+        const Quadrature<dim>    q(GeometryInfo<dim>::project_to_unit_cell(
+          unit));
+        FEValues<dim>            fe_values(fe_space.mapping(),
+                                fe,
+                                q,
+                                update_values | update_gradients);
+        fe_values.reinit(cell);
+        const auto u =
+          fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+        std::vector<Tensor<1, dim>> value(1);
+        std::vector<Tensor<2, dim>> gradient(1);
+        fe_values[u].get_function_values(solution, value);
+        fe_values[u].get_function_gradients(solution, gradient);
+        const ElasticModuli<dim> moduli(materials(cell->material_id()),
+                                        plane_state);
+        const SymmetricTensor<2, dim> strain = symmetrize(gradient[0]);
+        const SymmetricTensor<2, dim> stress = moduli.stress(strain);
+        double *v = &local[k * n_values];
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = value[0][d];
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            v[dim + a * dim + b] = stress[a][b];
+        v[dim + dim * dim]     = moduli.sigma_zz(strain);
+        v[dim + dim * dim + 1] = 1.0;
+      }
+    std::vector<double> global(local.size());
+    Utilities::MPI::sum(local, comm, global);
+
+    std::vector<PointValue<dim>> result(points.size());
+    for (unsigned int k = 0; k < points.size(); ++k)
+      {
+        const double *v     = &global[k * n_values];
+        const double  count = v[dim + dim * dim + 1];
+        result[k].point = points[k];
+        for (unsigned int d = 0; d < dim; ++d)
+          result[k].displacement[d] = v[d] / count;
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = a; b < dim; ++b)
+            result[k].stress[a][b] = v[dim + a * dim + b] / count;
+        result[k].sigma_zz = v[dim + dim * dim] / count;
+      }
+    return result;
+  }
+
+  template std::vector<PointValue<2>>
+  evaluate_at_points<2>(const DoFHandler<2> &,
+                        const FiniteElementSpace<2> &,
+                        const MaterialLibrary &,
+                        const PlaneState,
+                        const TrilinosWrappers::MPI::Vector &,
+                        const std::vector<Point<2>> &);
+} // namespace lithostress

@@ -1,0 +1,77 @@
+#include <deal.II/dofs/dof_handler.h>
+
+#include <lithostress/postprocess/stress_postprocessor.h>
+
+namespace lithostress
+{
+  template <int dim>
+  StressPostprocessor<dim>::StressPostprocessor(const MaterialLibrary &materials,
+                                                const PlaneState plane_state,
+                                                const unsigned int n_fields)
+    : materials(materials)
+    , plane_state(plane_state)
+    , n_fields(n_fields)
+  {}
+
+  template <int dim>
+  std::vector<std::string>
+  StressPostprocessor<dim>::get_names() const
+  {
+    std::vector<std::string> names(dim, "displacement");
+    for (unsigned int i = 0; i < dim * dim; ++i)
+      names.emplace_back("stress");
+    names.emplace_back("sigma_zz");
+    return names;
+  }
+
+  template <int dim>
+  std::vector<DataComponentInterpretation::DataComponentInterpretation>
+  StressPostprocessor<dim>::get_data_component_interpretation() const
+  {
+    std::vector<DataComponentInterpretation::DataComponentInterpretation> i(
+      dim, DataComponentInterpretation::component_is_part_of_vector);
+    for (unsigned int k = 0; k < dim * dim; ++k)
+      i.push_back(DataComponentInterpretation::component_is_part_of_tensor);
+    i.push_back(DataComponentInterpretation::component_is_scalar);
+    return i;
+  }
+
+  template <int dim>
+  UpdateFlags
+  StressPostprocessor<dim>::get_needed_update_flags() const
+  {
+    return update_values | update_gradients;
+  }
+
+  template <int dim>
+  void
+  StressPostprocessor<dim>::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<dim> &inputs,
+    std::vector<Vector<double>> &               computed) const
+  {
+    const auto cell = inputs.template get_cell<dim>();
+    const ElasticModuli<dim> moduli(materials(cell->material_id()),
+                                    plane_state);
+    for (unsigned int q = 0; q < computed.size(); ++q)
+      {
+        Tensor<1, dim> u;
+        Tensor<2, dim> grad;
+        for (unsigned int f = 0; f < n_fields; ++f)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              u[d] += inputs.solution_values[q][f * dim + d];
+              grad[d] += inputs.solution_gradients[q][f * dim + d];
+            }
+        const SymmetricTensor<2, dim> strain = symmetrize(grad);
+        const SymmetricTensor<2, dim> stress = moduli.stress(strain);
+        for (unsigned int d = 0; d < dim; ++d)
+          computed[q][d] = u[d];
+        for (unsigned int a = 0; a < dim; ++a)
+          for (unsigned int b = 0; b < dim; ++b)
+            computed[q][dim + a * dim + b] = stress[a][b];
+        computed[q][dim + dim * dim] = moduli.sigma_zz(strain);
+      }
+  }
+
+  template class StressPostprocessor<2>;
+} // namespace lithostress

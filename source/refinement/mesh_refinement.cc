@@ -1,0 +1,251 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/numerics/error_estimator.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/refinement/mesh_refinement.h>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  MeshRefinement<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh refinement");
+    prm.declare_entry("Initial global refinement", "0", Patterns::Integer(0, 20),
+                      "Global refinements of the coarse mesh before the first "
+                      "cycle.");
+    prm.declare_entry("Number of cycles", "1", Patterns::Integer(1, 100),
+                      "Solve-refine cycles (rows of the convergence table).");
+    prm.declare_entry("Strategy", "global", Patterns::Selection("global|adaptive"),
+                      "Refine all cells, or by an error indicator.");
+    prm.declare_entry("Indicator", "Kelly",
+                      Patterns::Selection("Kelly|stress recovery"),
+                      "Adaptive indicator: Kelly (jump of the displacement "
+                      "gradient) or stress recovery (Zienkiewicz-Zhu).");
+    prm.declare_entry("Refine fraction", "0.3", Patterns::Anything(),
+                      "Fraction of the cells refined per cycle, in [0, 1].");
+    prm.declare_entry("Coarsen fraction", "0.0", Patterns::Anything(),
+                      "Fraction of the cells coarsened per cycle, in [0, 1].");
+    prm.declare_entry("Maximum level", "20", Patterns::Integer(0, 30),
+                      "No cell is refined beyond this level.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh refinement");
+    initial_global_refinement = prm.get_integer("Initial global refinement");
+    n_cycles                  = prm.get_integer("Number of cycles");
+    strategy  = prm.get("Strategy") == "global" ? Strategy::global :
+                                                  Strategy::adaptive;
+    indicator = prm.get("Indicator") == "Kelly" ? Indicator::kelly :
+                                                  Indicator::stress_recovery;
+    max_level = prm.get_integer("Maximum level");
+    auto fraction = [&](const std::string &entry) {
+      const std::string text = prm.get(entry);
+      double            value;
+      try
+        {
+          std::size_t used = 0;
+          value            = std::stod(text, &used);
+          if (used != text.size())
+            throw std::invalid_argument(text);
+        }
+      catch (const std::exception &)
+        {
+          throw_input_error("Mesh refinement/" + entry,
+                            "<" + text + "> is not a number");
+        }
+      if (value < 0 || value > 1)
+        throw_input_error("Mesh refinement/" + entry,
+                          "must lie in [0, 1], got " + text);
+      return value;
+    };
+    refine_fraction  = fraction("Refine fraction");
+    coarsen_fraction = fraction("Coarsen fraction");
+    if (refine_fraction + coarsen_fraction > 1)
+      throw_input_error("Mesh refinement/Refine fraction",
+                        "refine and coarsen fractions add up to more than 1");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  Vector<float>
+  MeshRefinement<dim>::indicators(
+    const DoFHandler<dim> &               dof_handler,
+    const FiniteElementSpace<dim> &      fe_space,
+    const MaterialLibrary &              materials,
+    const PlaneState                     plane_state,
+    const TrilinosWrappers::MPI::Vector &solution) const
+  {
+    const auto &  tria = dof_handler.get_triangulation();
+    Vector<float> eta(tria.n_active_cells());
+    if (indicator == Indicator::kelly)
+      {
+        KellyErrorEstimator<dim>::estimate(fe_space.mapping(),
+                                           dof_handler,
+                                           fe_space.face_quadrature(),
+                                           std::map<types::boundary_id,
+                                                    const Function<dim> *>(),
+                                           solution,
+                                           eta,
+                                           ComponentMask(),
+                                           nullptr,
+                                           numbers::invalid_unsigned_int,
+                                           tria.locally_owned_subdomain());
+        return eta;
+      }
+
+    // Zienkiewicz–Zhu: average the stress at the nodes of a continuous
+    // Q_p field (each cell contributes its stress at the node), then
+    // η_K = ‖σ_h − σ*‖_{L2(K)}.
+    const MPI_Comm           comm = dof_handler.get_communicator();
+    const unsigned int       n_stress = dim * (dim + 1) / 2;
+    const FESystem<dim>      stress_fe(FE_Q<dim>(fe_space.degree()), n_stress);
+    DoFHandler<dim>          stress_dofs(tria);
+    stress_dofs.distribute_dofs(stress_fe);
+    const IndexSet owned = stress_dofs.locally_owned_dofs();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(stress_dofs, relevant);
+    TrilinosWrappers::MPI::Vector sum, weight;
+    sum.reinit(owned, relevant, comm, true);
+    weight.reinit(owned, relevant, comm, true);
+
+    const Quadrature<dim> nodes(stress_fe.base_element(0).get_unit_support_points());
+    hp::QCollection<dim>  node_q;
+    for (unsigned int f = 0; f < fe_space.fe_collection().size(); ++f)
+      node_q.push_back(nodes);
+    hp::FEValues<dim> at_nodes(fe_space.mapping_collection(),
+                               fe_space.fe_collection(),
+                               node_q,
+                               update_gradients);
+    auto stress_component = [](const SymmetricTensor<2, dim> &s,
+                               const unsigned int             c) {
+      if (c < dim)
+        return s[c][c];
+      return (dim == 2) ? s[0][1] : (c == 3 ? s[0][1] : (c == 4 ? s[1][2] : s[0][2]));
+    };
+    std::vector<Tensor<2, dim>>          grads;
+    std::vector<types::global_dof_index> stress_indices(stress_fe.n_dofs_per_cell());
+    auto stress_cell = stress_dofs.begin_active();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cell->is_locally_owned())
+          {
+            at_nodes.reinit(cell);
+            const FEValues<dim> &fv = at_nodes.get_present_fe_values();
+            const auto           u =
+              fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+            grads.resize(fv.n_quadrature_points);
+            fv[u].get_function_gradients(solution, grads);
+            const ElasticModuli<dim> moduli(materials(cell->material_id()),
+                                            plane_state);
+            stress_cell->get_dof_indices(stress_indices);
+            for (unsigned int i = 0; i < stress_fe.n_dofs_per_cell(); ++i)
+              {
+                const auto ci = stress_fe.system_to_component_index(i);
+                const SymmetricTensor<2, dim> s =
+                  moduli.stress(symmetrize(grads[ci.second]));
+                sum(stress_indices[i]) += stress_component(s, ci.first);
+                weight(stress_indices[i]) += 1.0;
+              }
+          }
+        ++stress_cell;
+      }
+    sum.compress(VectorOperation::add);
+    weight.compress(VectorOperation::add);
+    TrilinosWrappers::MPI::Vector average(owned, comm);
+    for (const auto i : owned)
+      average(i) = sum(i) / weight(i);
+    average.compress(VectorOperation::insert);
+    AffineConstraints<double> hanging(relevant);
+    DoFTools::make_hanging_node_constraints(stress_dofs, hanging);
+    hanging.close();
+    hanging.distribute(average);
+    TrilinosWrappers::MPI::Vector recovered(owned, relevant, comm);
+    recovered = average;
+
+    hp::FEValues<dim> hp_fe_values(fe_space.mapping_collection(),
+                                   fe_space.fe_collection(),
+                                   fe_space.cell_quadrature(),
+                                   update_gradients | update_JxW_values);
+    const QGauss<dim>  quadrature(fe_space.degree() + 1);
+    FEValues<dim>      stress_values(fe_space.mapping(), stress_fe, quadrature,
+                                update_values);
+    std::vector<Vector<double>> s_star(quadrature.size(), Vector<double>(n_stress));
+    stress_cell = stress_dofs.begin_active();
+    unsigned int index = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cell->is_locally_owned())
+          {
+            hp_fe_values.reinit(cell);
+            const FEValues<dim> &fv = hp_fe_values.get_present_fe_values();
+            const auto           u =
+              fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+            grads.resize(fv.n_quadrature_points);
+            fv[u].get_function_gradients(solution, grads);
+            stress_values.reinit(stress_cell);
+            stress_values.get_function_values(recovered, s_star);
+            const ElasticModuli<dim> moduli(materials(cell->material_id()),
+                                            plane_state);
+            double e2 = 0;
+            for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+              {
+                const SymmetricTensor<2, dim> s =
+                  moduli.stress(symmetrize(grads[q]));
+                for (unsigned int c = 0; c < n_stress; ++c)
+                  {
+                    const double d = stress_component(s, c) - s_star[q](c);
+                    e2 += (c < dim ? 1.0 : 2.0) * d * d * fv.JxW(q);
+                  }
+              }
+            eta(index) = std::sqrt(e2);
+          }
+        ++stress_cell;
+        ++index;
+      }
+    return eta;
+  }
+
+  template <int dim>
+  void
+  MeshRefinement<dim>::refine(parallel::distributed::Triangulation<dim> &tria,
+                              const DoFHandler<dim> &         dof_handler,
+                              const FiniteElementSpace<dim> & fe_space,
+                              const MaterialLibrary &         materials,
+                              const PlaneState                plane_state,
+                              const TrilinosWrappers::MPI::Vector &solution) const
+  {
+    if (strategy == Strategy::global)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              static_cast<unsigned int>(cell->level()) < max_level)
+            cell->set_refine_flag();
+      }
+    else
+      {
+        const Vector<float> eta =
+          indicators(dof_handler, fe_space, materials, plane_state, solution);
+        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+          tria, eta, refine_fraction, coarsen_fraction);
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned() && cell->refine_flag_set() &&
+              static_cast<unsigned int>(cell->level()) >= max_level)
+            cell->clear_refine_flag();
+      }
+    tria.execute_coarsening_and_refinement();
+  }
+
+  template class MeshRefinement<2>;
+} // namespace lithostress

@@ -1,0 +1,365 @@
+#include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/grid/manifold.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/discretization/elastic_assembler.h>
+#include <lithostress/postprocess/error_norms.h>
+#include <lithostress/postprocess/point_values.h>
+#include <lithostress/simulator.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <set>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  Simulator<dim>::declare_parameters(ParameterHandler &prm,
+                                     ParameterHandler *first_pass)
+  {
+    prm.declare_entry("Output directory", "output", Patterns::Anything(),
+                      "Directory for all results; created if missing.");
+    prm.declare_entry("Plane state", "plane strain",
+                      Patterns::Selection("plane strain|plane stress"),
+                      "Plane strain (sigma_zz reported) or plane stress.");
+    prm.enter_subsection("Discretization");
+    prm.declare_entry("Polynomial degree", "2", Patterns::Integer(1, 4),
+                      "Degree p of the Lagrange elements (Q2 by default).");
+    prm.declare_entry("Mapping degree", "2", Patterns::Integer(1, 4),
+                      "Degree of the mapping used in assembly, errors and "
+                      "output; 1 = straight-sided cells.");
+    prm.declare_entry("Use manifolds", "true", Patterns::Bool(),
+                      "Attach the geometry's manifolds (curved boundaries); "
+                      "false = new vertices on straight lines (for tests).");
+    prm.leave_subsection();
+    GeometrySelector<dim>::declare_parameters(prm);
+    MaterialLibrary::declare_parameters(prm, first_pass);
+    PrescribedDisplacement<dim>::declare_parameters(prm, first_pass);
+    LoadCollection<dim>::declare_parameters(prm, first_pass);
+    MeshRefinement<dim>::declare_parameters(prm);
+    LinearSolverSelector<dim>::declare_parameters(prm);
+    SolutionOutput<dim>::declare_parameters(prm);
+    prm.enter_subsection("Convergence study");
+    ReferenceSolutionSelector<dim>::declare_parameters(prm);
+    prm.declare_entry("Points", "", Patterns::Anything(),
+                      "Points at which displacement and stress are reported "
+                      "each cycle: `x1, y1; x2, y2` [length unit].");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  Simulator<dim>::Simulator(const MPI_Comm communicator, ParameterHandler &prm)
+    : communicator(communicator)
+    , prm(prm)
+    , log(communicator)
+    , timer_stream(timer_text,
+                   Utilities::MPI::this_mpi_process(communicator) == 0)
+    , timer(std::make_unique<TimerOutput>(communicator,
+                                          timer_stream,
+                                          TimerOutput::never,
+                                          TimerOutput::wall_times))
+    , triangulation(communicator,
+                    typename Triangulation<dim>::MeshSmoothing(
+                      Triangulation<dim>::smoothing_on_refinement |
+                      Triangulation<dim>::smoothing_on_coarsening))
+    , dof_handler(triangulation)
+  {
+    try
+      {
+        TimerOutput::Scope t(*timer, "read and check model");
+        read_model();
+      }
+    catch (...)
+      {
+        // Destroy the timer outside of stack unwinding so that it does not
+        // warn about skipping its MPI summary.
+        timer.reset();
+        throw;
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::read_model()
+  {
+    output_directory = prm.get("Output directory");
+    plane_state      = parse_plane_state(prm.get("Plane state"));
+    length_scale     = GeometrySelector<dim>::length_scale(prm);
+
+    prm.enter_subsection("Discretization");
+    const unsigned int degree         = prm.get_integer("Polynomial degree");
+    const unsigned int mapping_degree = prm.get_integer("Mapping degree");
+    const bool         use_manifolds  = prm.get_bool("Use manifolds");
+    prm.leave_subsection();
+    fe_space = std::make_unique<FiniteElementSpace<dim>>(degree, mapping_degree);
+
+    geometry = GeometrySelector<dim>::create(prm);
+    geometry->create_coarse_mesh(triangulation);
+    if (!use_manifolds)
+      {
+        triangulation.reset_all_manifolds();
+        triangulation.set_all_manifold_ids(numbers::flat_manifold_id);
+      }
+
+    // Every material id and boundary part of the coarse mesh (the same on
+    // all ranks).
+    std::set<types::material_id> ids_in_mesh;
+    std::set<types::boundary_id> boundary_ids;
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      {
+        ids_in_mesh.insert(cell->material_id());
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            boundary_ids.insert(face->boundary_id());
+      }
+    materials.parse_parameters(prm);
+    materials.resolve(geometry->named_regions(), ids_in_mesh);
+
+    prm.enter_subsection("Convergence study");
+    reference = ReferenceSolutionSelector<dim>::create(prm,
+                                                       materials,
+                                                       plane_state,
+                                                       length_scale);
+    points =
+      parse_point_list<dim>(prm.get("Points"), "Convergence study/Points",
+                            length_scale);
+    prm.leave_subsection();
+
+    ModelDescription<dim> model;
+    for (const auto &part : geometry->boundary_parts())
+      if (boundary_ids.count(part.second) != 0)
+        model.boundary_parts.insert(part);
+    model.length_scale = length_scale;
+    model.reference    = reference.get();
+    loads.parse_parameters(prm, model);
+    prescribed_displacement.parse_parameters(prm, model);
+
+    refinement.parse_parameters(prm);
+    linear_solver = LinearSolverSelector<dim>::create(prm);
+    solution_output.parse_parameters(prm);
+
+    for (const Point<dim> &p : points)
+      {
+        bool inside = false;
+        for (const auto &cell : triangulation.cell_iterators_on_level(0))
+          {
+            try
+              {
+                const Point<dim> unit =
+                  fe_space->mapping().transform_real_to_unit_cell(cell, p);
+                inside = inside ||
+                         GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-8);
+              }
+            catch (...)
+              {}
+          }
+        if (!inside)
+          throw_input_error("Convergence study/Points",
+                            "the point (" + std::to_string(p[0]) + ", " +
+                              std::to_string(p[1]) +
+                              ") [m] is outside the mesh");
+      }
+    check_output_directory();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::check_output_directory() const
+  {
+    std::string problem;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(output_directory, error);
+        if (error)
+          problem = "cannot create it: " + error.message();
+        else
+          {
+            const std::string probe = output_directory + "/.write-test";
+            std::ofstream     out(probe);
+            if (!out)
+              problem = "cannot write into it";
+            out.close();
+            std::filesystem::remove(probe, error);
+          }
+      }
+    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    if (!problem.empty())
+      throw_input_error("Output directory", "<" + output_directory + ">: " + problem);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::setup_dofs()
+  {
+    TimerOutput::Scope t(*timer, "setup");
+    Timer              clock(communicator, true);
+    dof_handler.distribute_dofs(fe_space->fe_collection());
+    system.locally_owned = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, system.locally_relevant);
+    system.constraints.clear();
+    system.constraints.reinit(system.locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, system.constraints);
+    prescribed_displacement.apply(dof_handler, *fe_space, system.constraints);
+    system.constraints.close();
+    system.reinit(dof_handler, communicator, linear_solver->needs_matrix());
+    solution.reinit(system.locally_owned, system.locally_relevant, communicator);
+    statistics.dofs       = dof_handler.n_dofs();
+    statistics.cells      = triangulation.n_global_active_cells();
+    statistics.setup_time = clock.wall_time();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::assemble_system()
+  {
+    TimerOutput::Scope     t(*timer, "assemble");
+    Timer                  clock(communicator, true);
+    ElasticAssembler<dim>  assembler(*fe_space, materials, plane_state, loads);
+    assembler.assemble(dof_handler, system, linear_solver->needs_matrix());
+    statistics.assemble_time = clock.wall_time();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::solve()
+  {
+    TimerOutput::Scope            t(*timer, "solve");
+    Timer                         clock(communicator, true);
+    TrilinosWrappers::MPI::Vector owned_solution(system.locally_owned,
+                                                 communicator);
+    statistics.solver =
+      linear_solver->solve(dof_handler, *fe_space, system, owned_solution);
+    system.constraints.distribute(owned_solution);
+    solution             = owned_solution;
+    statistics.solve_time = clock.wall_time();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::postprocess(const unsigned int cycle)
+  {
+    TimerOutput::Scope t(*timer, "postprocess");
+    study.start_row(cycle, statistics.cells, statistics.dofs);
+    std::ostringstream progress;
+    progress << "cycle " << cycle << ": " << statistics.cells << " cells, "
+             << statistics.dofs << " DoFs, " << statistics.solver.solver << ' '
+             << statistics.solver.iterations << " it";
+    if (reference)
+      {
+        const ErrorNorms e = compute_error_norms(
+          dof_handler, *fe_space, materials, plane_state, solution, *reference);
+        study.add("L2(u)", e.displacement_l2, ConvergenceStudy::Kind::error);
+        study.add("energy", e.energy, ConvergenceStudy::Kind::error);
+        study.add("L2(stress)", e.stress_l2, ConvergenceStudy::Kind::error);
+        study.add("rel_L2(u)",
+                  e.displacement_l2 / std::max(e.displacement_l2_norm, 1e-300),
+                  ConvergenceStudy::Kind::error);
+        study.add("rel_energy",
+                  e.energy / std::max(e.energy_norm, 1e-300),
+                  ConvergenceStudy::Kind::error);
+        study.add("rel_L2(stress)",
+                  e.stress_l2 / std::max(e.stress_l2_norm, 1e-300),
+                  ConvergenceStudy::Kind::error);
+        progress << ", relative errors: L2(u) " << std::setprecision(3)
+                 << e.displacement_l2 / e.displacement_l2_norm << ", energy "
+                 << e.energy / e.energy_norm;
+      }
+    const auto values = evaluate_at_points(
+      dof_handler, *fe_space, materials, plane_state, solution, points);
+    for (unsigned int k = 0; k < values.size(); ++k)
+      {
+        const std::string at = "@P" + std::to_string(k + 1);
+        study.add("u_x" + at, values[k].displacement[0],
+                  ConvergenceStudy::Kind::functional);
+        study.add("u_y" + at, values[k].displacement[1],
+                  ConvergenceStudy::Kind::functional);
+        study.add("s_xx" + at, values[k].stress[0][0],
+                  ConvergenceStudy::Kind::functional);
+        study.add("s_yy" + at, values[k].stress[1][1],
+                  ConvergenceStudy::Kind::functional);
+        study.add("s_xy" + at, values[k].stress[0][1],
+                  ConvergenceStudy::Kind::functional);
+        if (reference)
+          study.add("err_u" + at,
+                    (values[k].displacement -
+                     reference->displacement(values[k].point))
+                      .norm(),
+                    ConvergenceStudy::Kind::error);
+      }
+    log << progress.str() << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::run()
+  {
+    try
+      {
+        run_cycles();
+      }
+    catch (...)
+      {
+        timer.reset();
+        throw;
+      }
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::run_cycles()
+  {
+    log.open(output_directory + "/log.txt");
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::ofstream out(output_directory + "/parameters.prm");
+        prm.print_parameters(out, ParameterHandler::ShortPRM);
+      }
+    log << "lithostress: " << Utilities::MPI::n_mpi_processes(communicator)
+        << " MPI rank(s), output in " << output_directory << "/" << std::endl;
+
+    {
+      TimerOutput::Scope t(*timer, "refine");
+      if (refinement.initial_global_refinement > 0)
+        triangulation.refine_global(refinement.initial_global_refinement);
+    }
+    for (unsigned int cycle = 0; cycle < refinement.n_cycles; ++cycle)
+      {
+        if (cycle > 0)
+          {
+            TimerOutput::Scope t(*timer, "refine");
+            refinement.refine(triangulation, dof_handler, *fe_space, materials,
+                              plane_state, solution);
+          }
+        setup_dofs();
+        assemble_system();
+        solve();
+        postprocess(cycle);
+        TimerOutput::Scope t(*timer, "output");
+        solution_output.write(output_directory, cycle, dof_handler, *fe_space,
+                              materials, plane_state, solution);
+      }
+
+    if (!study.empty())
+      {
+        std::ostringstream table;
+        study.print(table);
+        log << "\nConvergence table (rates in DoFs; for errors "
+               "rate = -dlog(e)/dlog(N)):\n"
+            << table.str();
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          {
+            std::ofstream csv(output_directory + "/convergence.csv");
+            study.write_csv(csv);
+          }
+      }
+    timer->print_summary();
+    log << '\n' << timer_text.str();
+  }
+
+  template class Simulator<2>;
+} // namespace lithostress
