@@ -63,9 +63,11 @@ namespace lithostress
                                           TimerOutput::never,
                                           TimerOutput::wall_times))
     , triangulation(communicator,
+                    // No island elimination: adaptive refinement at a
+                    // singularity must be able to refine a single cell.
                     typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::smoothing_on_refinement |
-                      Triangulation<dim>::smoothing_on_coarsening))
+                      Triangulation<dim>::limit_level_difference_at_vertices |
+                      Triangulation<dim>::eliminate_unrefined_islands))
     , dof_handler(triangulation)
   {
     try

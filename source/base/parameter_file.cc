@@ -17,13 +17,19 @@ namespace lithostress
       std::ostringstream text;
       exc.print_info(text);
       std::string message = text.str();
-      // deal.II's parser messages span several lines; make them one.
-      for (char &c : message)
-        if (c == '\n')
-          c = ' ';
-      while (!message.empty() && message.back() == ' ')
-        message.pop_back();
-      return message;
+        // deal.II's messages are indented over several lines: make them one
+      // line with single spaces.
+      std::string one_line;
+      for (const char c : message)
+        {
+          const char d = (c == '\n' || c == '\t') ? ' ' : c;
+          if (d == ' ' && (one_line.empty() || one_line.back() == ' '))
+            continue;
+          one_line += d;
+        }
+      while (!one_line.empty() && one_line.back() == ' ')
+        one_line.pop_back();
+      return one_line;
     }
   } // namespace
 

@@ -4,6 +4,7 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/base/parsed_expression.h>
 
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -43,20 +44,30 @@ namespace lithostress
         constants[Utilities::trim(item.substr(0, equal))] = value;
       }
     const std::string variables = (dim == 2) ? "x,y,t" : "x,y,z,t";
+    // muparser's own report goes to std::cerr; keep it out of the one-line
+    // error message.
+    std::ostringstream   muparser_report;
+    std::streambuf *const cerr_buffer = std::cerr.rdbuf(muparser_report.rdbuf());
     try
       {
         function = std::make_unique<FunctionParser<dim>>(1);
         function->initialize(variables, expression, constants, true);
         function->value(Point<dim>());
+        std::cerr.rdbuf(cerr_buffer);
       }
     catch (const ExceptionBase &exc)
       {
+        std::cerr.rdbuf(cerr_buffer);
         std::ostringstream message;
         exc.print_info(message);
-        std::string m = message.str();
-        for (char &c : m)
-          if (c == '\n')
-            c = ' ';
+        std::string m;
+        for (const char c : message.str() + " " + muparser_report.str())
+          {
+            const char d = (c == '\n' || c == '\t') ? ' ' : c;
+            if (d == ' ' && (m.empty() || m.back() == ' '))
+              continue;
+            m += d;
+          }
         throw_input_error(entry,
                           "cannot parse the expression <" + expression +
                             ">: " + Utilities::trim(m));

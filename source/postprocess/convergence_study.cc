@@ -58,32 +58,57 @@ namespace lithostress
   void
   ConvergenceStudy::print(std::ostream &out) const
   {
-    out << std::setw(5) << "cycle" << std::setw(9) << "cells" << std::setw(10)
-        << "DoFs";
-    for (const Column &column : columns)
-      out << "  " << std::setw(std::max<int>(12, column.name.size()))
-          << column.name << std::setw(8)
-          << (column.kind == Kind::error ? "rate" : "change");
-    out << '\n';
-    for (unsigned int r = 0; r < rows.size(); ++r)
+    // Errors in one table; functionals in blocks of a few columns so that
+    // lines stay readable.
+    std::vector<std::vector<unsigned int>> blocks(1);
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      if (columns[c].kind == Kind::error)
+        blocks[0].push_back(c);
+    std::vector<unsigned int> functionals;
+    for (unsigned int c = 0; c < columns.size(); ++c)
+      if (columns[c].kind == Kind::functional)
+        functionals.push_back(c);
+    for (unsigned int k = 0; k < functionals.size(); k += 5)
+      blocks.emplace_back(functionals.begin() + k,
+                          functionals.begin() +
+                            std::min<std::size_t>(k + 5, functionals.size()));
+    bool first = true;
+    for (const auto &block : blocks)
       {
-        out << std::setw(5) << rows[r].cycle << std::setw(9) << rows[r].cells
-            << std::setw(10) << rows[r].dofs;
-        for (unsigned int c = 0; c < columns.size(); ++c)
-          {
-            const double d = derived(r, c);
-            out << "  " << std::setw(std::max<int>(12, columns[c].name.size()))
-                << std::scientific << std::setprecision(4)
-                << rows[r].values[c];
-            if (std::isnan(d))
-              out << std::setw(8) << "-";
-            else if (columns[c].kind == Kind::error)
-              out << std::setw(8) << std::fixed << std::setprecision(2) << d;
-            else
-              out << std::setw(8) << std::scientific << std::setprecision(1)
-                  << d;
-          }
+        if (block.empty() && !first)
+          continue;
+        if (!first)
+          out << '\n';
+        first = false;
+        out << std::setw(5) << "cycle" << std::setw(9) << "cells"
+            << std::setw(10) << "DoFs";
+        for (const unsigned int c : block)
+          out << "  " << std::setw(std::max<int>(11, columns[c].name.size()))
+              << columns[c].name << std::setw(8)
+              << (columns[c].kind == Kind::error ? "rate" : "change");
         out << '\n';
+        for (unsigned int r = 0; r < rows.size(); ++r)
+          {
+            out << std::setw(5) << rows[r].cycle << std::setw(9)
+                << rows[r].cells << std::setw(10) << rows[r].dofs;
+            for (const unsigned int c : block)
+              {
+                const double d = derived(r, c);
+                out << "  "
+                    << std::setw(std::max<int>(11, columns[c].name.size()))
+                    << std::scientific << std::setprecision(4)
+                    << rows[r].values[c];
+                if (std::isnan(d))
+                  out << std::setw(8) << "-";
+                else if (columns[c].kind == Kind::error)
+                  out << std::setw(8) << std::fixed << std::setprecision(2)
+                      << d;
+                else
+                  out << std::setw(8) << std::scientific
+                      << std::setprecision(1) << d;
+              }
+            out << '\n';
+          }
       }
     out << std::defaultfloat;
   }

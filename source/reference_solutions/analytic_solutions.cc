@@ -35,7 +35,7 @@ namespace lithostress
     base            = prm.get_double("Base") * scale;
     const double g  = prm.get_double("Gravity");
     prm.leave_subsection();
-    const Material &          m = materials(0);
+    const Material &          m = materials.materials().front();
     const ElasticModuli<dim> moduli(m, state);
     rho_g         = m.density * g;
     p_modulus     = moduli.lambda_in_plane + 2 * moduli.mu;
@@ -89,7 +89,7 @@ namespace lithostress
     l = prm.get_double("Length") * scale;
     c = prm.get_double("Depth") * scale / 2;
     prm.leave_subsection();
-    const Material &m = materials(0);
+    const Material &m = materials.materials().front();
     E                 = m.youngs_modulus;
     nu                = m.poissons_ratio;
     if (state == PlaneState::plane_strain)
@@ -157,10 +157,15 @@ namespace lithostress
     b              = prm.get_double("Outer radius") * scale;
     t              = prm.get_double("Shell thickness") * scale;
     prm.leave_subsection();
+    if (t > 0 && materials.materials().size() < 2)
+      throw_input_error("Convergence study/Lame cylinder/Shell thickness",
+                        "is positive but Materials/Names names no second "
+                        "material for the shell");
     for (unsigned int layer = 0; layer < 2; ++layer)
       {
-        const types::material_id id = (layer == 1 && t > 0) ? 1 : 0;
-        const ElasticModuli<dim> moduli(materials(id), state);
+        const Material &material =
+          materials.materials()[(layer == 1 && t > 0) ? 1 : 0];
+        const ElasticModuli<dim> moduli(material, state);
         lambda[layer] = moduli.lambda_in_plane;
         mu[layer]     = moduli.mu;
       }
@@ -277,7 +282,7 @@ namespace lithostress
       }
     lambda = 0.5 * (lo + hi);
     Q      = -std::cos((lambda - 1) * omega) / std::cos((lambda + 1) * omega);
-    const Material &m = materials(0);
+    const Material &m = materials.materials().front();
     G                 = m.shear_modulus();
     kappa             = (state == PlaneState::plane_strain) ?
                           3 - 4 * m.poissons_ratio :

@@ -7,6 +7,7 @@
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/numerics/error_estimator.h>
+#include <deal.II/numerics/vector_tools_common.h>
 
 #include <lithostress/base/input_error.h>
 #include <lithostress/refinement/mesh_refinement.h>
@@ -29,10 +30,17 @@ namespace lithostress
                       Patterns::Selection("Kelly|stress recovery"),
                       "Adaptive indicator: Kelly (jump of the displacement "
                       "gradient) or stress recovery (Zienkiewicz-Zhu).");
+    prm.declare_entry("Marking", "fraction of error",
+                      Patterns::Selection("fraction of error|fraction of cells"),
+                      "Refine the cells that carry the `Refine fraction` of "
+                      "the squared error (Doerfler marking, optimal rates at "
+                      "singularities), or that fraction of the cells.");
     prm.declare_entry("Refine fraction", "0.3", Patterns::Anything(),
-                      "Fraction of the cells refined per cycle, in [0, 1].");
+                      "Fraction of the error (or cells) refined per cycle, "
+                      "in [0, 1].");
     prm.declare_entry("Coarsen fraction", "0.0", Patterns::Anything(),
-                      "Fraction of the cells coarsened per cycle, in [0, 1].");
+                      "Fraction of the error (or cells) coarsened per cycle, "
+                      "in [0, 1].");
     prm.declare_entry("Maximum level", "20", Patterns::Integer(0, 30),
                       "No cell is refined beyond this level.");
     prm.leave_subsection();
@@ -50,6 +58,9 @@ namespace lithostress
     indicator = prm.get("Indicator") == "Kelly" ? Indicator::kelly :
                                                   Indicator::stress_recovery;
     max_level = prm.get_integer("Maximum level");
+    marking   = prm.get("Marking") == "fraction of error" ?
+                  Marking::fraction_of_error :
+                  Marking::fraction_of_cells;
     auto fraction = [&](const std::string &entry) {
       const std::string text = prm.get(entry);
       double            value;
@@ -219,6 +230,79 @@ namespace lithostress
 
   template <int dim>
   void
+  MeshRefinement<dim>::mark_fraction_of_error(
+    parallel::distributed::Triangulation<dim> &tria,
+    const Vector<float> &                      eta) const
+  {
+    // Dörfler marking by bisection on the threshold: refine the cells with
+    // η_K > t where t is the largest value with Σ_{η_K > t} η_K² ≥ θ Σ η_K²;
+    // coarsen the cells with η_K < s, s the largest value with
+    // Σ_{η_K < s} η_K² ≤ θ_c Σ η_K². Only sums are communicated.
+    const MPI_Comm comm = tria.get_communicator();
+    double         total = 0, largest = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const double e = eta(cell->active_cell_index());
+          total += e * e;
+          largest = std::max(largest, e);
+        }
+    total   = Utilities::MPI::sum(total, comm);
+    largest = Utilities::MPI::max(largest, comm);
+    if (!(total > 0))
+      return;
+    auto sum_above = [&](const double t) {
+      double sum = 0;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const double e = eta(cell->active_cell_index());
+            if (e > t)
+              sum += e * e;
+          }
+      return Utilities::MPI::sum(sum, comm);
+    };
+    double refine_threshold = largest;
+    if (refine_fraction > 0)
+      {
+        double lo = 0, hi = largest;
+        for (unsigned int it = 0; it < 60; ++it)
+          {
+            const double mid = 0.5 * (lo + hi);
+            if (sum_above(mid) >= refine_fraction * total)
+              lo = mid;
+            else
+              hi = mid;
+          }
+        refine_threshold = lo;
+      }
+    double coarsen_threshold = 0;
+    if (coarsen_fraction > 0)
+      {
+        double lo = 0, hi = largest;
+        for (unsigned int it = 0; it < 60; ++it)
+          {
+            const double mid = 0.5 * (lo + hi);
+            if (total - sum_above(mid) <= coarsen_fraction * total)
+              lo = mid;
+            else
+              hi = mid;
+          }
+        coarsen_threshold = lo;
+      }
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const double e = eta(cell->active_cell_index());
+          if (refine_fraction > 0 && e > refine_threshold)
+            cell->set_refine_flag();
+          else if (e < coarsen_threshold)
+            cell->set_coarsen_flag();
+        }
+  }
+
+  template <int dim>
+  void
   MeshRefinement<dim>::refine(parallel::distributed::Triangulation<dim> &tria,
                               const DoFHandler<dim> &         dof_handler,
                               const FiniteElementSpace<dim> & fe_space,
@@ -237,8 +321,14 @@ namespace lithostress
       {
         const Vector<float> eta =
           indicators(dof_handler, fe_space, materials, plane_state, solution);
-        parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
-          tria, eta, refine_fraction, coarsen_fraction);
+        if (marking == Marking::fraction_of_cells)
+          parallel::distributed::GridRefinement::
+            refine_and_coarsen_fixed_number(tria,
+                                            eta,
+                                            refine_fraction,
+                                            coarsen_fraction);
+        else
+          mark_fraction_of_error(tria, eta);
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned() && cell->refine_flag_set() &&
               static_cast<unsigned int>(cell->level()) >= max_level)

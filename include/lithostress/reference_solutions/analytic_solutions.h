@@ -10,7 +10,7 @@ namespace lithostress
    * gravity, top at y_t, base at y_b fixed vertically. σ_yy = ρ g (y − y_t),
    * σ_xx = λ/(λ + 2μ) σ_yy (ν/(1 − ν) σ_yy in plane strain) and
    * u_y = ρ g ((y − y_t)² − H²) / 2(λ + 2μ); the top subsides 12.71 m for the
-   * thesis data. Material id 0.
+   * thesis data. Uses the first material of `Materials/Names`.
    */
   template <int dim>
   class LithostaticColumn : public ReferenceSolution<dim>
@@ -38,7 +38,7 @@ namespace lithostress
    * x = 0 carried by a parabolic shear traction, and the support at x = l
    * that fixes u = v = 0 and ∂v/∂x = 0 at (l, 0) (horizontal element of the
    * neutral fibre clamped). Plane stress as printed; plane strain with
-   * E' = E/(1 − ν²), ν' = ν/(1 − ν). Material id 0.
+   * E' = E/(1 − ν²), ν' = ν/(1 − ν). Uses the first material.
    */
   template <int dim>
   class TimoshenkoCantilever : public ReferenceSolution<dim>
@@ -65,7 +65,8 @@ namespace lithostress
    * an optional bonded outer shell b ≤ r ≤ b + t of another material and a
    * free outer surface: u_r = A_i r + B_i / r in each layer, the four
    * constants from σ_rr(a) = −p, continuity of u_r and σ_rr at b and
-   * σ_rr(b + t) = 0. Body material id 0, shell id 1.
+   * σ_rr(b + t) = 0. The body is the first material of `Materials/Names`,
+   * the shell the second.
    */
   template <int dim>
   class LameCylinder : public ReferenceSolution<dim>
@@ -96,7 +97,7 @@ namespace lithostress
    * smallest root of sin(2λω) + λ sin 2ω = 0 (Szabó & Babuška 1991, §
    * "Linear elasticity", eqs. for the symmetric mode). Traction-free on the
    * notch faces; prescribed on the outer boundary it makes an exact
-   * singular solution with u ∈ H^{1+λ}. Material id 0.
+   * singular solution with u ∈ H^{1+λ}. Uses the first material.
    */
   template <int dim>
   class WilliamsCornerSolution : public ReferenceSolution<dim>

@@ -34,6 +34,13 @@ namespace lithostress
       kelly,
       stress_recovery
     };
+    /** How cells are marked: a fraction of the cells (fixed number), or the
+     * cells that carry a fraction of the squared error (Dörfler marking). */
+    enum class Marking
+    {
+      fraction_of_cells,
+      fraction_of_error
+    };
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -57,10 +64,16 @@ namespace lithostress
                const PlaneState                     plane_state,
                const TrilinosWrappers::MPI::Vector &solution) const;
 
+    /** Dörfler marking of the cells carrying the refine fraction of Σ η². */
+    void
+    mark_fraction_of_error(parallel::distributed::Triangulation<dim> &tria,
+                           const Vector<float> &                      eta) const;
+
     unsigned int initial_global_refinement = 0;
     unsigned int n_cycles                  = 1;
     Strategy     strategy                  = Strategy::global;
     Indicator    indicator                 = Indicator::kelly;
+    Marking      marking                   = Marking::fraction_of_error;
     double       refine_fraction           = 0.3;
     double       coarsen_fraction          = 0.0;
     unsigned int max_level                 = 20;

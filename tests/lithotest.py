@@ -1,0 +1,80 @@
+"""Helpers for the lithostress ctest suite: run the program on a .prm file
+(optionally on several MPI ranks, with --set overrides) and read its
+convergence table. Only the Python standard library is used."""
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+BINARY = os.environ.get("LITHOSTRESS_BINARY", "")
+SOURCE = os.path.dirname(os.path.abspath(__file__))
+
+
+def env():
+    e = dict(os.environ)
+    e["OMPI_ALLOW_RUN_AS_ROOT"] = "1"
+    e["OMPI_ALLOW_RUN_AS_ROOT_CONFIRM"] = "1"
+    e["OMPI_MCA_rmaps_base_oversubscribe"] = "1"
+    return e
+
+
+def run(prm, output, ranks=1, sets=(), expect_success=True):
+    """Run lithostress on tests/<prm> writing into <output>; returns the
+    CompletedProcess. Fails the test if the run fails unexpectedly."""
+    if os.path.isdir(output):
+        shutil.rmtree(output)
+    cmd = [BINARY, os.path.join(SOURCE, prm), "--set", "Output directory=" + output]
+    for s in sets:
+        cmd += ["--set", s]
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks)] + cmd
+    result = subprocess.run(cmd, capture_output=True, text=True, env=env())
+    if expect_success and result.returncode != 0:
+        print(result.stdout)
+        print(result.stderr)
+        fail("lithostress failed on %s (exit %d)" % (prm, result.returncode))
+    return result
+
+
+def table(output):
+    """The rows of <output>/convergence.csv as a list of dicts of floats."""
+    with open(os.path.join(output, "convergence.csv")) as f:
+        rows = []
+        for row in csv.DictReader(f):
+            rows.append({k: (float(v) if v != "" else math.nan) for k, v in row.items()})
+        return rows
+
+
+def slope(rows, column, first=0):
+    """Least-squares rate -dlog(e)/dlog(N) over rows[first:]."""
+    xs = [math.log(r["dofs"]) for r in rows[first:]]
+    ys = [math.log(r[column]) for r in rows[first:]]
+    n = len(xs)
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxy = sum((x - mx) * (y - my) for x, y in zip(xs, ys))
+    sxx = sum((x - mx) ** 2 for x in xs)
+    return -sxy / sxx
+
+
+FAILURES = []
+
+
+def check(condition, message):
+    status = "ok  " if condition else "FAIL"
+    print("%s %s" % (status, message))
+    if not condition:
+        FAILURES.append(message)
+
+
+def fail(message):
+    print("FAIL " + message)
+    sys.exit(1)
+
+
+def finish():
+    if FAILURES:
+        print("%d check(s) failed" % len(FAILURES))
+        sys.exit(1)
+    print("all checks passed")
