@@ -33,8 +33,8 @@ namespace
          "  lithostress --help                    this text\n"
          "\n"
          "Results go to the `Output directory` of the .prm: ParaView files\n"
-         "(solution.pvd), parameters.prm as run, log.txt and, with several\n"
-         "cycles or points, convergence.csv. See README.md and doc/.\n";
+         "(solution.pvd), parameters.prm as run, log.txt, convergence.csv\n"
+         "(one row per cycle) and statistics.json. See README.md and doc/.\n";
   }
 
   void

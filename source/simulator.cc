@@ -9,6 +9,8 @@
 #include <lithostress/postprocess/point_values.h>
 #include <lithostress/simulator.h>
 
+#include <sys/resource.h>
+
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -64,11 +66,11 @@ namespace lithostress
                                           TimerOutput::wall_times))
     , triangulation(communicator,
                     // No island elimination: adaptive refinement at a
-                    // singularity must be able to refine a single cell.
-                    typename Triangulation<dim>::MeshSmoothing(
-                      Triangulation<dim>::limit_level_difference_at_vertices |
-                      Triangulation<dim>::eliminate_unrefined_islands))
+                    // singularity must be able to refine a single cell, and
+                    // the mesh must not depend on the partition.
+                    Triangulation<dim>::limit_level_difference_at_vertices)
     , dof_handler(triangulation)
+    , wall_clock(communicator, true)
   {
     try
       {
@@ -138,6 +140,8 @@ namespace lithostress
     model.length_scale = length_scale;
     model.reference    = reference.get();
     loads.parse_parameters(prm, model);
+    for (const auto &load : loads.loads())
+      load->check_against_mesh(triangulation, fe_space->mapping());
     prescribed_displacement.parse_parameters(prm, model);
 
     refinement.parse_parameters(prm);
@@ -326,16 +330,20 @@ namespace lithostress
 
     {
       TimerOutput::Scope t(*timer, "refine");
+      Timer              clock(communicator, true);
       if (refinement.initial_global_refinement > 0)
         triangulation.refine_global(refinement.initial_global_refinement);
+      statistics.mesh_time = clock.wall_time();
     }
     for (unsigned int cycle = 0; cycle < refinement.n_cycles; ++cycle)
       {
         if (cycle > 0)
           {
             TimerOutput::Scope t(*timer, "refine");
+            Timer              clock(communicator, true);
             refinement.refine(triangulation, dof_handler, *fe_space, materials,
                               plane_state, solution);
+            statistics.mesh_time = clock.wall_time();
           }
         setup_dofs();
         assemble_system();
@@ -359,8 +367,33 @@ namespace lithostress
             study.write_csv(csv);
           }
       }
+    write_statistics();
     timer->print_summary();
     log << '\n' << timer_text.str();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::write_statistics() const
+  {
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    const double peak_mb = Utilities::MPI::sum(usage.ru_maxrss / 1024.0, communicator);
+    const double total   = wall_clock.wall_time();
+    if (Utilities::MPI::this_mpi_process(communicator) != 0)
+      return;
+    std::ofstream out(output_directory + "/statistics.json");
+    out << "{\"solver\": \"" << statistics.solver.solver
+        << "\", \"dofs\": " << statistics.dofs
+        << ", \"cells\": " << statistics.cells
+        << ", \"ranks\": " << Utilities::MPI::n_mpi_processes(communicator)
+        << ", \"iterations\": " << statistics.solver.iterations
+        << ", \"setup_s\": " << statistics.mesh_time + statistics.setup_time
+        << ", \"assemble_s\": " << statistics.assemble_time
+        << ", \"solve_s\": " << statistics.solve_time
+        << ", \"preconditioner_setup_s\": " << statistics.solver.setup_time
+        << ", \"total_s\": " << total << ", \"peak_rss_mb\": " << peak_mb
+        << "}\n";
   }
 
   template class Simulator<2>;

@@ -67,7 +67,8 @@ namespace lithostress
     {
       unsigned long long dofs = 0, cells = 0;
       SolverReport       solver;
-      double             setup_time = 0, assemble_time = 0, solve_time = 0;
+      double             mesh_time = 0, setup_time = 0, assemble_time = 0,
+                         solve_time = 0;
     };
 
     const CycleStatistics &
@@ -87,6 +88,10 @@ namespace lithostress
     postprocess(const unsigned int cycle);
     void
     check_output_directory() const;
+    /** Write the last cycle's sizes, timings and peak memory as
+     * `statistics.json` (read by bench/run). */
+    void
+    write_statistics() const;
     /** Read and check the model (the constructor's work). */
     void
     read_model();
@@ -120,6 +125,7 @@ namespace lithostress
     std::vector<Point<dim>>            points;
     ConvergenceStudy                   study;
     CycleStatistics                    statistics;
+    Timer                              wall_clock;
   };
 } // namespace lithostress
 

@@ -123,6 +123,8 @@ namespace lithostress
       }
     catch (const ExceptionBase &exc)
       {
+        for (unsigned int i = 0; i < entered; ++i)
+          prm.leave_subsection();
         throw InputError("override <" + assignment + ">: " + message_of(exc));
       }
     for (unsigned int i = 0; i < entered; ++i)

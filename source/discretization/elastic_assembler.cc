@@ -122,6 +122,8 @@ namespace lithostress
                                                           dofs,
                                                           system.rhs);
         }
+    for (const auto &load : loads.loads())
+      load->add_point_terms(dof_handler, fe_space, system.constraints, system.rhs);
     if (with_matrix)
       system.matrix.compress(VectorOperation::add);
     system.rhs.compress(VectorOperation::add);

@@ -64,8 +64,10 @@ namespace lithostress
       model = std::make_unique<QuarterAnnulus<dim>>();
     else if (name == "L-shaped domain")
       model = std::make_unique<LShapedDomain<dim>>();
-    else
+    else if (name == "gmsh")
       model = std::make_unique<GmshMesh<dim>>();
+    else
+      throw_input_error("Geometry/Model", "<" + name + "> is not implemented");
     model->parse_parameters(prm, scale);
     prm.leave_subsection();
     return model;

@@ -1,5 +1,7 @@
 #include <lithostress/loads/boundary_traction.h>
 #include <lithostress/loads/gravity.h>
+#include <lithostress/loads/isostatic_restoring_force.h>
+#include <lithostress/loads/line_force.h>
 #include <lithostress/loads/load_collection.h>
 
 namespace lithostress
@@ -12,6 +14,8 @@ namespace lithostress
     prm.enter_subsection("Loads");
     Gravity<dim>::declare_parameters(prm);
     BoundaryTraction<dim>::declare_parameters(prm, first_pass);
+    IsostaticRestoringForce<dim>::declare_parameters(prm);
+    LineForce<dim>::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -29,6 +33,14 @@ namespace lithostress
     traction->parse_parameters(prm, model);
     if (!traction->empty())
       active.push_back(std::move(traction));
+    auto restoring = std::make_unique<IsostaticRestoringForce<dim>>();
+    restoring->parse_parameters(prm, model);
+    if (!restoring->empty())
+      active.push_back(std::move(restoring));
+    auto line_force = std::make_unique<LineForce<dim>>();
+    line_force->parse_parameters(prm, model);
+    if (!line_force->empty())
+      active.push_back(std::move(line_force));
     prm.leave_subsection();
   }
 

@@ -119,7 +119,8 @@ namespace lithostress
               }
             catch (const std::exception &)
               {}
-            if (value < 0 || value >= numbers::invalid_material_id)
+            if (value < 0 ||
+                static_cast<unsigned int>(value) >= numbers::invalid_material_id)
               throw_input_error(where + "Material id",
                                 "<" + id +
                                   "> is not a non-negative integer id");

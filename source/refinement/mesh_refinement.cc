@@ -294,9 +294,12 @@ namespace lithostress
       if (cell->is_locally_owned())
         {
           const double e = eta(cell->active_cell_index());
-          if (refine_fraction > 0 && e > refine_threshold)
+          // Cells within a relative 1e-6 of the threshold are treated
+          // alike: indicators of mirror-symmetric cells differ only by
+          // round-off, which depends on the partition.
+          if (refine_fraction > 0 && e > refine_threshold * (1 - 1e-6))
             cell->set_refine_flag();
-          else if (e < coarsen_threshold)
+          else if (e < coarsen_threshold * (1 - 1e-6))
             cell->set_coarsen_flag();
         }
   }

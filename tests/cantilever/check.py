@@ -27,4 +27,26 @@ tip = -P * l ** 3 / (3 * Ep * I)
 for row in rows:
     check(abs(row["u_y@P1"] - tip) < 2e-3 * abs(tip),
           "cycle %d: tip deflection %.5f vs exact %.5f (within 0.2%%)" % (row["cycle"], row["u_y@P1"], tip))
+
+# The thesis's support: the whole end x = l fixed. Physical truth: fixing
+# the whole end section restrains the warping of the section, so the tip
+# deflects more than beam theory (= the exact solution with the horizontal
+# neutral-fibre element clamped, T&G) and less than the exact solution with
+# the vertical element clamped, which adds the shear deflection
+# P l c^2 / (2 I G) (T&G §21).
+out = os.path.abspath("output_cantilever_thesis_clamp")
+run("cantilever/cantilever_thesis_clamp.prm", out)
+rows = table(out)
+G = E / (2 * (1 + nu))
+shear_extra = P * l * c * c / (2 * I * G)
+converged = rows[-1]["u_y@P1"]
+# The clamped corners (x = l, y = +-c) are stress singularities, so the tip
+# deflection converges slowly; the last change bounds the remaining error.
+check(abs(rows[-1]["change_u_y@P1"]) < 5e-4 * abs(converged), "fully clamped: tip deflection converged to %.5f (last change %.1e)" % (converged, rows[-1]["change_u_y@P1"]))
+check(tip - shear_extra < converged < tip,
+      "fully clamped tip %.5f lies between beam theory %.5f and the vertical-element clamp %.5f"
+      % (converged, tip, tip - shear_extra))
+coarse = rows[0]["u_y@P1"]
+print("info thesis-sized mesh (4 x 1 Q2 cells, 27 nodes): tip %.5f, converged fully clamped %.5f (%.1f%%), "
+      "beam theory %.5f (%.1f%%)" % (coarse, converged, 100 * (coarse / converged - 1), tip, 100 * (coarse / tip - 1)))
 finish()

@@ -19,10 +19,15 @@ check(abs(ru - lam / 2) < 0.04, "uniform: energy rate %.3f, singularity-limited 
 out_a = os.path.abspath("output_l_adaptive")
 run("l_shaped/l_shaped_adaptive.prm", out_a)
 adaptive = table(out_a)
-# Asymptotic range: the cycles past 1000 DoFs.
-first = next(i for i, r in enumerate(adaptive) if r["dofs"] > 1000)
-ra = slope(adaptive, "energy", first)
-check(abs(ra - 1.0) < 0.15, "adaptive: energy rate %.3f over %d cycles, optimal for Q2: 1" % (ra, len(adaptive) - first))
+# Rate over the last 10 cycles. The claim is that adaptivity recovers the
+# optimal Q2 rate 1 (uniform: 0.27). Over a finite range the fitted rate
+# lies slightly above 1 because the mesh is still approaching its graded
+# asymptotic form (the error of the initially under-resolved corner falls
+# faster than N^-1); asymptotically it cannot exceed 1 (best N-term
+# approximation), so a fit above 1.3 would mean a mis-measured error.
+ra = slope(adaptive, "energy", len(adaptive) - 10)
+check(0.9 <= ra <= 1.3, "adaptive: energy rate %.3f over the last 10 cycles (%d to %d DoFs), optimal for Q2: 1"
+      % (ra, adaptive[-10]["dofs"], adaptive[-1]["dofs"]))
 finest = uniform[-1]
 needed = next((r for r in adaptive if r["energy"] <= finest["energy"]), None)
 check(needed is not None, "adaptive reaches the finest uniform energy error %.3e" % finest["energy"])

@@ -2,10 +2,14 @@
 #define lithostress_loads_load_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/material.h>
 
@@ -36,6 +40,13 @@ namespace lithostress
     types::boundary_id
     boundary_id(const std::string &name, const std::string &entry) const;
   };
+
+  /** Whether @p p lies in the coarse mesh of @p tria (through @p mapping). */
+  template <int dim>
+  bool
+  point_in_mesh(const Triangulation<dim> &tria,
+                const Mapping<dim> &      mapping,
+                const Point<dim> &        p);
 
   /**
    * A load on the model: contributions to the right-hand side, and possibly
@@ -69,6 +80,20 @@ namespace lithostress
                        const FEValuesExtractors::Vector &displacement,
                        FullMatrix<double> &              cell_matrix,
                        Vector<double> &                  cell_rhs) const;
+
+    /** Add concentrated (point) contributions to the global right-hand side,
+     * through @p constraints; called once per assembly on every rank. */
+    virtual void
+    add_point_terms(const DoFHandler<dim> &          dof_handler,
+                    const FiniteElementSpace<dim> &  fe_space,
+                    const AffineConstraints<double> &constraints,
+                    TrilinosWrappers::MPI::Vector &  rhs) const;
+
+    /** Check the load against the coarse mesh (points inside the body);
+     * throws InputError. */
+    virtual void
+    check_against_mesh(const Triangulation<dim> &tria,
+                       const Mapping<dim> &      mapping) const;
 
     /** Whether the load changes the stiffness matrix. */
     virtual bool

@@ -25,7 +25,7 @@ namespace lithostress
 
   /**
    * Integrates the errors over the owned cells with a Gauss rule of
-   * degree + 3 points on the degree-p mapping (so that the geometry error of
+   * degree + 4 points per direction on the model's mapping (so that the geometry error of
    * curved cells is measured, not hidden) and sums them over all ranks.
    */
   template <int dim>

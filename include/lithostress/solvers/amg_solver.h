@@ -22,7 +22,7 @@ namespace lithostress
       double       relative_tolerance = 1e-10;
       unsigned int max_iterations     = 1000;
       unsigned int smoother_sweeps    = 2;
-      double       aggregation_threshold = 0.02;
+      double       aggregation_threshold = 1e-4;
     };
 
     explicit AMGSolver(const Settings &settings);
@@ -37,25 +37,6 @@ namespace lithostress
     Settings settings;
   };
 
-  /**
-   * A sparse direct solver (Trilinos Amesos, KLU by default) for small or
-   * ill-conditioned problems.
-   */
-  template <int dim>
-  class DirectSolver : public LinearSolver<dim>
-  {
-  public:
-    explicit DirectSolver(const std::string &amesos_solver);
-
-    SolverReport
-    solve(const DoFHandler<dim> &         dof_handler,
-          const FiniteElementSpace<dim> &fe_space,
-          const LinearSystem<dim> &      system,
-          TrilinosWrappers::MPI::Vector &solution) override;
-
-  private:
-    std::string amesos_solver;
-  };
 } // namespace lithostress
 
 #endif

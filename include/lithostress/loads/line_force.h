@@ -1,0 +1,48 @@
+#ifndef lithostress_loads_line_force_h
+#define lithostress_loads_line_force_h
+
+#include <lithostress/loads/load.h>
+
+#include <vector>
+
+namespace lithostress
+{
+  /**
+   * Line forces [N per metre out of plane] at points (thesis card 6, nodal
+   * forces), applied at the mesh vertex nearest to each point. A line load
+   * is a logarithmic singularity of 2-D elasticity: the displacement under
+   * it grows without bound under refinement, so results are compared away
+   * from it.
+   */
+  template <int dim>
+  class LineForce : public Load<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+
+    bool
+    empty() const
+    {
+      return points.empty();
+    }
+
+    void
+    add_point_terms(const DoFHandler<dim> &          dof_handler,
+                    const FiniteElementSpace<dim> &  fe_space,
+                    const AffineConstraints<double> &constraints,
+                    TrilinosWrappers::MPI::Vector &  rhs) const override;
+
+    void
+    check_against_mesh(const Triangulation<dim> &tria,
+                       const Mapping<dim> &      mapping) const override;
+
+  private:
+    std::vector<Point<dim>>     points;
+    std::vector<Tensor<1, dim>> forces;
+  };
+} // namespace lithostress
+
+#endif

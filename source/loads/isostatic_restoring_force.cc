@@ -1,0 +1,110 @@
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/loads/isostatic_restoring_force.h>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  IsostaticRestoringForce<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Isostatic restoring force");
+    prm.declare_entry("Boundary parts", "", Patterns::Anything(),
+                      "Comma separated boundary parts in contact with a "
+                      "fluid (e.g. base: mantle, top: water or sediment).");
+    prm.declare_entry("Fluid densities", "", Patterns::Anything(),
+                      "Density rho_f [kg/m^3] of the fluid on each part, in "
+                      "the same order; > 0.");
+    prm.declare_entry("Gravity", "9.81", Patterns::Double(0),
+                      "Gravitational acceleration g [m/s^2] of the restoring "
+                      "force rho_f g u_y.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  IsostaticRestoringForce<dim>::parse_parameters(
+    ParameterHandler &           prm,
+    const ModelDescription<dim> &model)
+  {
+    const std::string where = "Loads/Isostatic restoring force/";
+    parts.clear();
+    prm.enter_subsection("Isostatic restoring force");
+    const auto   names     = split_list(prm.get("Boundary parts"));
+    const auto   densities = split_list(prm.get("Fluid densities"));
+    const double g         = prm.get_double("Gravity");
+    prm.leave_subsection();
+    if (names.size() != densities.size())
+      throw_input_error(where + "Fluid densities",
+                        "needs one density per boundary part (" +
+                          std::to_string(names.size()) + ")");
+    for (unsigned int i = 0; i < names.size(); ++i)
+      {
+        double rho = 0;
+        try
+          {
+            std::size_t used = 0;
+            rho              = std::stod(densities[i], &used);
+            if (used != densities[i].size())
+              throw std::invalid_argument(densities[i]);
+          }
+        catch (const std::exception &)
+          {
+            throw_input_error(where + "Fluid densities",
+                              "<" + densities[i] + "> is not a number");
+          }
+        if (!(rho > 0))
+          throw_input_error(where + "Fluid densities",
+                            "the density of the fluid on <" + names[i] +
+                              "> must be positive, got " + densities[i]);
+        parts.emplace_back(model.boundary_id(names[i], where + "Boundary parts"),
+                           rho * g);
+      }
+  }
+
+  template <int dim>
+  bool
+  IsostaticRestoringForce<dim>::acts_on_boundary(
+    const types::boundary_id id) const
+  {
+    return stiffness(id) > 0;
+  }
+
+  template <int dim>
+  double
+  IsostaticRestoringForce<dim>::stiffness(const types::boundary_id id) const
+  {
+    for (const auto &part : parts)
+      if (part.first == id)
+        return part.second;
+    return 0;
+  }
+
+  template <int dim>
+  void
+  IsostaticRestoringForce<dim>::add_boundary_terms(
+    const FEFaceValues<dim> &         fe_face_values,
+    const types::boundary_id          id,
+    const FEValuesExtractors::Vector &displacement,
+    FullMatrix<double> &              cell_matrix,
+    Vector<double> &) const
+  {
+    const double       k = stiffness(id);
+    const unsigned int n = fe_face_values.dofs_per_cell;
+    std::vector<double> phi_y(n);
+    for (const unsigned int q : fe_face_values.quadrature_point_indices())
+      {
+        const double w =
+          k * std::abs(fe_face_values.normal_vector(q)[dim - 1]) *
+          fe_face_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          phi_y[i] = fe_face_values[displacement].value(i, q)[dim - 1];
+        for (unsigned int i = 0; i < n; ++i)
+          if (phi_y[i] != 0)
+            for (unsigned int j = 0; j < n; ++j)
+              cell_matrix(i, j) += w * phi_y[i] * phi_y[j];
+      }
+  }
+
+  template class IsostaticRestoringForce<2>;
+} // namespace lithostress
