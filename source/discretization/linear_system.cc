@@ -1,6 +1,5 @@
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <lithostress/discretization/linear_system.h>
 
@@ -16,13 +15,20 @@ namespace lithostress
     matrix.clear();
     if (!with_matrix)
       return;
-    DynamicSparsityPattern dsp(locally_relevant);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               locally_owned,
-                                               communicator,
-                                               locally_relevant);
-    matrix.reinit(locally_owned, locally_owned, dsp, communicator);
+    // Build Trilinos' pattern directly (off-rank rows are exchanged by
+    // compress()): cheaper than a DynamicSparsityPattern plus a copy.
+    TrilinosWrappers::SparsityPattern pattern(locally_owned,
+                                              locally_owned,
+                                              locally_relevant,
+                                              communicator);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    pattern,
+                                    constraints,
+                                    false,
+                                    Utilities::MPI::this_mpi_process(
+                                      communicator));
+    pattern.compress();
+    matrix.reinit(pattern);
   }
 
   template class LinearSystem<2>;

@@ -36,7 +36,7 @@ namespace lithostress
     data.higher_order_elements = true;
     data.smoother_sweeps       = settings.smoother_sweeps;
     data.aggregation_threshold = settings.aggregation_threshold;
-    data.smoother_type         = "Chebyshev";
+    data.smoother_type         = settings.smoother.c_str();
     data.coarse_type           = "Amesos-KLU";
     Teuchos::ParameterList              parameters;
     std::unique_ptr<Epetra_MultiVector> unused_modes;
@@ -78,6 +78,16 @@ namespace lithostress
     report.iterations     = control.last_step();
     report.final_residual = rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
     report.solve_time     = timer.wall_time();
+    if (settings.time_matrix_vector_product)
+      {
+        // The machine's speed in the operation that bounds CG + AMG, to
+        // compare benchmark figures across machines.
+        TrilinosWrappers::MPI::Vector y(system.rhs);
+        Timer                         product(dof_handler.get_communicator(), true);
+        for (unsigned int k = 0; k < 10; ++k)
+          system.matrix.vmult(y, system.rhs);
+        report.matrix_vector_product_time = product.wall_time() / 10;
+      }
     return report;
   }
 

@@ -16,11 +16,17 @@ namespace lithostress
                       "CG stops when |r| <= tol |f| (unpreconditioned).");
     prm.declare_entry("Maximum iterations", "1000", Patterns::Integer(1),
                       "CG iteration limit; reaching it is an error.");
+    prm.declare_entry("AMG smoother", "Chebyshev",
+                      Patterns::Selection("Chebyshev|symmetric Gauss-Seidel"),
+                      "Smoother of the AMG V-cycle.");
     prm.declare_entry("AMG smoother sweeps", "2", Patterns::Integer(1),
-                      "Chebyshev smoother degree in the AMG V-cycle.");
+                      "Smoother sweeps (Chebyshev degree) in the V-cycle.");
     prm.declare_entry("AMG aggregation threshold", "1e-4",
                       Patterns::Double(0, 1),
                       "ML aggregation threshold (strength of connection).");
+    prm.declare_entry("Time matrix-vector product", "false", Patterns::Bool(),
+                      "Measure one product with the stiffness matrix after "
+                      "the solve and report it in statistics.json (bench).");
     prm.declare_entry("Direct solver", "Amesos_Klu",
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps|"
                                           "Amesos_Superludist"),
@@ -41,6 +47,9 @@ namespace lithostress
         s.max_iterations        = prm.get_integer("Maximum iterations");
         s.smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
         s.aggregation_threshold = prm.get_double("AMG aggregation threshold");
+        s.smoother              = prm.get("AMG smoother");
+        s.time_matrix_vector_product =
+          prm.get_bool("Time matrix-vector product");
         solver                  = std::make_unique<AMGSolver<dim>>(s);
       }
     else

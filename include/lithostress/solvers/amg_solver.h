@@ -23,6 +23,9 @@ namespace lithostress
       unsigned int max_iterations     = 1000;
       unsigned int smoother_sweeps    = 2;
       double       aggregation_threshold = 1e-4;
+      std::string  smoother              = "Chebyshev";
+      /** Time matrix-vector products (for the benchmark). */
+      bool         time_matrix_vector_product = false;
     };
 
     explicit AMGSolver(const Settings &settings);

@@ -21,6 +21,8 @@ namespace lithostress
     double       setup_time   = 0;
     double       solve_time   = 0;
     double       final_residual = 0;
+    /** Time of one product with the system matrix, if measured. */
+    double       matrix_vector_product_time = 0;
   };
 
   /**
