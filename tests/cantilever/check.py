@@ -19,6 +19,18 @@ check(abs(r_en - 1.0) < 0.1, "energy rate %.3f in DoFs (%.2f in h), expected 1 (
 check(abs(r_st - 1.0) < 0.1, "L2(stress) rate %.3f in DoFs, expected 1" % r_st)
 check(rows[-1]["rel_L2(u)"] < 1e-6, "finest relative L2 error %.2e < 1e-6" % rows[-1]["rel_L2(u)"])
 
+# Plane stress: the same rates against the plane-stress form of the exact
+# solution (the one Timoshenko & Goodier print).
+out = os.path.abspath("output_cantilever_plane_stress")
+run("cantilever/cantilever.prm", out, 1, ["Plane state=plane stress", "Mesh refinement/Number of cycles=5"])
+ps = table(out)
+r = slope(ps, "L2(u)", len(ps) - 3)
+check(abs(r - 1.5) < 0.1, "plane stress: L2(u) rate %.3f, expected 1.5" % r)
+check(ps[-1]["rel_L2(u)"] < 1e-6, "plane stress: finest relative L2 error %.2e" % ps[-1]["rel_L2(u)"])
+tip_ps = -5e4 * 10.0 ** 3 / (3 * 0.85e7 * 2 * 1.25 ** 3 / 3)
+check(abs(ps[-1]["u_y@P1"] - tip_ps) < 2e-3 * abs(tip_ps),
+      "plane stress: tip deflection %.5f vs exact -P l^3/(3EI) = %.5f" % (ps[-1]["u_y@P1"], tip_ps))
+
 # Tip deflection at (0, 0): exact -P l^3/(3 E' I) in plane strain.
 P, l, c, E, nu = 5e4, 10.0, 1.25, 0.85e7, 0.35
 Ep = E / (1 - nu * nu)

@@ -28,6 +28,14 @@ adaptive = table(out_a)
 ra = slope(adaptive, "energy", len(adaptive) - 10)
 check(0.9 <= ra <= 1.3, "adaptive: energy rate %.3f over the last 10 cycles (%d to %d DoFs), optimal for Q2: 1"
       % (ra, adaptive[-10]["dofs"], adaptive[-1]["dofs"]))
+# The stress-recovery (Zienkiewicz-Zhu) indicator must drive refinement as
+# well: the optimal rate again (same tolerance as for Kelly).
+out_z = os.path.abspath("output_l_adaptive_zz")
+run("l_shaped/l_shaped_adaptive.prm", out_z, 1, ["Mesh refinement/Indicator=stress recovery"])
+zz = table(out_z)
+rz = slope(zz, "energy", len(zz) - 10)
+check(0.9 <= rz <= 1.3, "adaptive, stress-recovery indicator: energy rate %.3f over the last 10 cycles" % rz)
+
 finest = uniform[-1]
 needed = next((r for r in adaptive if r["energy"] <= finest["energy"]), None)
 check(needed is not None, "adaptive reaches the finest uniform energy error %.3e" % finest["energy"])

@@ -26,6 +26,22 @@ rowsf, rf, ef = rates("flat", ["Discretization/Use manifolds=false"])
 check(abs(rf) < 0.05, "no manifold: L2 rate %.3f, error stalls" % rf)
 check(rowsf[-1]["rel_L2(u)"] > 1e-2, "no manifold: finest relative error %.2e stays at the polygon's geometry error" % rowsf[-1]["rel_L2(u)"])
 
+# The same cylinder read from a Gmsh file (quarter_annulus.msh, physical
+# groups named inner/outer/left/base/body), with the arcs declared in the
+# .prm: PolarManifold on the arcs, TransfiniteInterpolationManifold on the
+# cells next to them. Optimal rate again, and the same order of error.
+out = os.path.abspath("output_lame_gmsh")
+run("lame_cylinder/lame.prm", out, 1,
+    ["Geometry/Model=gmsh",
+     "Geometry/Gmsh/Mesh file=" + os.path.join(SOURCE, "lame_cylinder", "quarter_annulus.msh"),
+     "Geometry/Gmsh/Circular arcs=inner: 0, 0; outer: 0, 0",
+     "Materials/body/Material id=",
+     "Mesh refinement/Number of cycles=5"])
+rows = table(out)
+rg = slope(rows, "L2(u)", len(rows) - 3)
+check(abs(rg - 1.5) < 0.1, "Gmsh mesh with declared arcs: L2 rate %.3f, expected 1.5" % rg)
+check(rows[-1]["rel_L2(u)"] < 1e-6, "Gmsh mesh: finest relative L2 error %.2e" % rows[-1]["rel_L2(u)"])
+
 # Composite cylinder: body in a stiff bonded shell (thesis §4.5 geometry).
 out = os.path.abspath("output_lame_shell")
 run("lame_cylinder/lame.prm", out, 1,
