@@ -7,6 +7,8 @@
 #include <lithostress/discretization/elastic_assembler.h>
 #include <lithostress/postprocess/error_norms.h>
 #include <lithostress/postprocess/point_values.h>
+#include <lithostress/postprocess/surface_profile.h>
+#include <lithostress/postprocess/thin_plate_flexure.h>
 #include <lithostress/simulator.h>
 
 #include <sys/resource.h>
@@ -47,6 +49,13 @@ namespace lithostress
     MeshRefinement<dim>::declare_parameters(prm);
     LinearSolverSelector<dim>::declare_parameters(prm);
     SolutionOutput<dim>::declare_parameters(prm);
+    prm.enter_subsection("Output");
+    prm.declare_entry("Surface profile boundary", "", Patterns::Anything(),
+                      "Boundary part whose displacement is written to "
+                      "surface_profile.csv (x, y, u_x, u_y in m, sorted by "
+                      "x) each cycle; empty = none.");
+    prm.leave_subsection();
+    ThinPlateFlexure::declare_parameters(prm);
     prm.enter_subsection("Convergence study");
     ReferenceSolutionSelector<dim>::declare_parameters(prm);
     prm.declare_entry("Points", "", Patterns::Anything(),
@@ -155,6 +164,17 @@ namespace lithostress
     for (const auto &load : loads.loads())
       load->check_against_mesh(triangulation, fe_space->mapping());
     prescribed_displacement.parse_parameters(prm, model);
+
+    prm.enter_subsection("Output");
+    const std::string surface = Utilities::trim(prm.get("Surface profile boundary"));
+    prm.leave_subsection();
+    if (!surface.empty())
+      surface_boundary =
+        model.boundary_id(surface, "Output/Surface profile boundary");
+    thin_plate.parse_parameters(prm, materials, length_scale);
+    if (thin_plate.enabled && surface.empty())
+      throw_input_error("Thin plate comparison/Enabled",
+                        "needs Output/Surface profile boundary");
 
     refinement.parse_parameters(prm);
     linear_solver = LinearSolverSelector<dim>::create(prm);
@@ -309,6 +329,16 @@ namespace lithostress
                       .norm(),
                     ConvergenceStudy::Kind::error);
       }
+    if (surface_boundary != numbers::invalid_boundary_id)
+      {
+        const auto profile =
+          surface_profile(dof_handler, *fe_space, solution, surface_boundary);
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          write_surface_profile<dim>(output_directory + "/surface_profile.csv",
+                                     profile);
+        if (thin_plate.enabled && cycle + 1 == refinement.n_cycles)
+          thin_plate_profile = profile;
+      }
     log << progress.str() << std::endl;
   }
 
@@ -362,7 +392,8 @@ namespace lithostress
         solve();
         postprocess(cycle);
         TimerOutput::Scope t(*timer, "output");
-        solution_output.write(output_directory, cycle, dof_handler, *fe_space,
+        if (!solution_output.last_only || cycle + 1 == refinement.n_cycles)
+          solution_output.write(output_directory, cycle, dof_handler, *fe_space,
                               materials, plane_state, solution);
       }
 
@@ -379,6 +410,8 @@ namespace lithostress
             study.write_csv(csv);
           }
       }
+    if (thin_plate.enabled)
+      thin_plate.report(thin_plate_profile, log);
     write_statistics();
     timer->print_summary();
     log << '\n' << timer_text.str();

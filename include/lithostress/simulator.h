@@ -19,6 +19,7 @@
 #include <lithostress/output/run_log.h>
 #include <lithostress/output/solution_output.h>
 #include <lithostress/postprocess/convergence_study.h>
+#include <lithostress/postprocess/thin_plate_flexure.h>
 #include <lithostress/refinement/mesh_refinement.h>
 #include <lithostress/reference_solutions/reference_solution.h>
 #include <lithostress/solvers/linear_solver.h>
@@ -123,6 +124,9 @@ namespace lithostress
     MeshRefinement<dim>                refinement;
     SolutionOutput<dim>                solution_output;
     std::vector<Point<dim>>            points;
+    types::boundary_id                 surface_boundary = numbers::invalid_boundary_id;
+    ThinPlateFlexure                   thin_plate;
+    std::vector<std::array<double, 5>> thin_plate_profile;
     ConvergenceStudy                   study;
     CycleStatistics                    statistics;
     Timer                              wall_clock;

@@ -21,6 +21,14 @@ namespace lithostress
     for (unsigned int i = 0; i < dim * dim; ++i)
       names.emplace_back("stress");
     names.emplace_back("sigma_zz");
+    names.emplace_back("sigma_1");
+    names.emplace_back("sigma_2");
+    for (unsigned int d = 0; d < dim; ++d)
+      names.emplace_back("sigma_1_direction");
+    names.emplace_back("deviatoric_xx");
+    names.emplace_back("deviatoric_yy");
+    names.emplace_back("deviatoric_zz");
+    names.emplace_back("deviatoric_xy");
     return names;
   }
 
@@ -32,7 +40,12 @@ namespace lithostress
       dim, DataComponentInterpretation::component_is_part_of_vector);
     for (unsigned int k = 0; k < dim * dim; ++k)
       i.push_back(DataComponentInterpretation::component_is_part_of_tensor);
-    i.push_back(DataComponentInterpretation::component_is_scalar);
+    for (unsigned int k = 0; k < 3; ++k)
+      i.push_back(DataComponentInterpretation::component_is_scalar);
+    for (unsigned int d = 0; d < dim; ++d)
+      i.push_back(DataComponentInterpretation::component_is_part_of_vector);
+    for (unsigned int k = 0; k < 4; ++k)
+      i.push_back(DataComponentInterpretation::component_is_scalar);
     return i;
   }
 
@@ -69,8 +82,35 @@ namespace lithostress
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
             computed[q][dim + a * dim + b] = stress[a][b];
-        computed[q][dim + dim * dim] = moduli.sigma_zz(strain);
+        const double sigma_zz = moduli.sigma_zz(strain);
+        unsigned int k        = dim + dim * dim;
+        computed[q][k++]      = sigma_zz;
+        const PrincipalStresses p = principal_stresses(stress);
+        computed[q][k++]          = p.sigma_1;
+        computed[q][k++]          = p.sigma_2;
+        computed[q][k++]          = std::cos(p.angle_1);
+        computed[q][k++]          = std::sin(p.angle_1);
+        const double mean = (stress[0][0] + stress[1][1] + sigma_zz) / 3;
+        computed[q][k++]  = stress[0][0] - mean;
+        computed[q][k++]  = stress[1][1] - mean;
+        computed[q][k++]  = sigma_zz - mean;
+        computed[q][k++]  = stress[0][1];
       }
+  }
+
+  PrincipalStresses
+  principal_stresses(const SymmetricTensor<2, 2> &s)
+  {
+    const double centre = 0.5 * (s[0][0] + s[1][1]);
+    const double radius =
+      std::sqrt(0.25 * (s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
+                s[0][1] * s[0][1]);
+    PrincipalStresses p;
+    p.sigma_1 = centre + radius;
+    p.sigma_2 = centre - radius;
+    // tan 2θ = 2σxy / (σxx − σyy): the direction of σ1 from the x axis.
+    p.angle_1 = 0.5 * std::atan2(2 * s[0][1], s[0][0] - s[1][1]);
+    return p;
   }
 
   template class StressPostprocessor<2>;

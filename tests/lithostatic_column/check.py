@@ -39,4 +39,14 @@ for name, ranks, sets in cases:
         syy = row["s_yy@P4"]; sxx = row["s_xx@P4"]
         check(abs(syy - rho * g * -5e3) < 1e-9 * rho * g * 5e3, "%s: sigma_yy(-5 km) = %.6e Pa" % (tag, syy))
         check(abs(sxx - nu / (1 - nu) * syy) < 1e-9 * abs(syy), "%s: sigma_xx = nu/(1-nu) sigma_yy" % tag)
+
+# ParaView output of the uniform run: a .pvd record of every cycle and the
+# fields the user needs.
+out = os.path.abspath("output_column_uniform")
+pvd = open(os.path.join(out, "solution.pvd")).read()
+check(all(("solution_%03d.pvtu" % c) in pvd for c in range(3)), "solution.pvd lists the .pvtu of every cycle")
+pvtu = open(os.path.join(out, "solution_002.pvtu")).read()
+for field in ("displacement", "stress", "sigma_zz", "sigma_1", "sigma_2", "sigma_1_direction",
+              "deviatoric_xx", "material_id", "mpi_rank"):
+    check('Name="%s"' % field in pvtu, "output has the field %s" % field)
 finish()

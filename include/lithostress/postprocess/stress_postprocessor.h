@@ -8,11 +8,25 @@
 
 namespace lithostress
 {
+  /** The in-plane principal stresses σ1 ≥ σ2 and the angle of σ1 from the
+   * x axis (radians, in (−π/2, π/2]); tension positive (SPEC §2). */
+  struct PrincipalStresses
+  {
+    double sigma_1, sigma_2, angle_1;
+  };
+
+  /** Principal stresses of an in-plane stress tensor (Mohr's circle). */
+  PrincipalStresses
+  principal_stresses(const SymmetricTensor<2, 2> &stress);
+
   /**
    * Turns the finite element solution into the fields written for
    * ParaView: the displacement (the sum of all displacement fields, since
-   * FE_Nothing fields are zero), the in-plane stress tensor and σ_zz
-   * (tension positive), evaluated with the moduli of each cell's material.
+   * FE_Nothing fields are zero), the in-plane stress tensor, σ_zz, the
+   * principal stresses σ1 ≥ σ2 with the unit direction of σ1, and the
+   * deviatoric stresses relative to the mean of the three principal
+   * stresses (thesis DEVST), tension positive, evaluated with the moduli of
+   * each cell's material.
    */
   template <int dim>
   class StressPostprocessor : public DataPostprocessor<dim>
