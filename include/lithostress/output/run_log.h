@@ -1,0 +1,52 @@
+#ifndef lithostress_output_run_log_h
+#define lithostress_output_run_log_h
+
+#include <deal.II/base/mpi.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * The run's log: what rank 0 prints goes both to the screen and to
+   * `log.txt` in the output directory (once it is opened).
+   */
+  class RunLog
+  {
+  public:
+    explicit RunLog(const MPI_Comm communicator);
+
+    /** Start writing to @p filename as well as to the screen. */
+    void
+    open(const std::string &filename);
+
+    template <typename T>
+    RunLog &
+    operator<<(const T &value)
+    {
+      if (is_root)
+        {
+          std::ostringstream text;
+          text << value;
+          write(text.str());
+        }
+      return *this;
+    }
+
+    RunLog &
+    operator<<(std::ostream &(*manipulator)(std::ostream &));
+
+  private:
+    void
+    write(const std::string &text);
+
+    bool          is_root;
+    std::ofstream file;
+  };
+} // namespace lithostress
+
+#endif

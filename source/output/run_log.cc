@@ -1,0 +1,37 @@
+#include <lithostress/output/run_log.h>
+
+#include <iostream>
+
+namespace lithostress
+{
+  RunLog::RunLog(const MPI_Comm communicator)
+    : is_root(Utilities::MPI::this_mpi_process(communicator) == 0)
+  {}
+
+  void
+  RunLog::open(const std::string &filename)
+  {
+    if (is_root)
+      file.open(filename);
+  }
+
+  void
+  RunLog::write(const std::string &text)
+  {
+    std::cout << text;
+    if (file.is_open())
+      file << text;
+  }
+
+  RunLog &
+  RunLog::operator<<(std::ostream &(*manipulator)(std::ostream &))
+  {
+    if (is_root)
+      {
+        manipulator(std::cout);
+        if (file.is_open())
+          manipulator(file);
+      }
+    return *this;
+  }
+} // namespace lithostress

@@ -1,0 +1,90 @@
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/numerics/data_out.h>
+
+#include <lithostress/output/solution_output.h>
+#include <lithostress/postprocess/stress_postprocessor.h>
+
+#include <fstream>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  SolutionOutput<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Write ParaView files", "true", Patterns::Bool(),
+                      "Write .pvtu/.vtu files per cycle and a .pvd record.");
+    prm.declare_entry("ParaView cycles", "all", Patterns::Selection("all|last"),
+                      "Write ParaView files for every refinement cycle or "
+                      "only for the last.");
+    prm.declare_entry("Subdivisions", "0", Patterns::Integer(0, 8),
+                      "Patch subdivisions per cell; 0 = the polynomial "
+                      "degree (higher-order Lagrange cells).");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  SolutionOutput<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    enabled      = prm.get_bool("Write ParaView files");
+    last_only    = prm.get("ParaView cycles") == "last";
+    subdivisions = prm.get_integer("Subdivisions");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  SolutionOutput<dim>::write(const std::string &                  directory,
+                             const unsigned int                   cycle,
+                             const DoFHandler<dim> &              dof_handler,
+                             const FiniteElementSpace<dim> &      fe_space,
+                             const MaterialLibrary &              materials,
+                             const PlaneState                     plane_state,
+                             const TrilinosWrappers::MPI::Vector &solution)
+  {
+    if (!enabled)
+      return;
+    const StressPostprocessor<dim> postprocessor(materials,
+                                                 plane_state,
+                                                 fe_space.n_fields());
+    DataOut<dim>                   data_out;
+    DataOutBase::VtkFlags          flags;
+    flags.write_higher_order_cells = true;
+    flags.compression_level        = DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(solution, postprocessor);
+
+    const auto &  tria = dof_handler.get_triangulation();
+    Vector<float> material_id(tria.n_active_cells());
+    Vector<float> rank(tria.n_active_cells());
+    unsigned int  index = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        if (cell->is_locally_owned())
+          {
+            material_id(index) = cell->material_id();
+            rank(index)        = cell->subdomain_id();
+          }
+        ++index;
+      }
+    data_out.add_data_vector(material_id, "material_id");
+    data_out.add_data_vector(rank, "mpi_rank");
+    data_out.build_patches(fe_space.mapping(),
+                           subdivisions == 0 ? fe_space.degree() : subdivisions,
+                           DataOut<dim>::curved_inner_cells);
+    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
+      directory + "/", "solution", cycle, dof_handler.get_communicator(), 3);
+    records.emplace_back(cycle, pvtu);
+    if (Utilities::MPI::this_mpi_process(dof_handler.get_communicator()) == 0)
+      {
+        std::ofstream pvd(directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, records);
+      }
+  }
+
+  template class SolutionOutput<2>;
+} // namespace lithostress
