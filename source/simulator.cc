@@ -56,6 +56,7 @@ namespace lithostress
                       "x) each cycle; empty = none.");
     prm.leave_subsection();
     ThinPlateFlexure::declare_parameters(prm);
+    GriffithFailure::declare_parameters(prm);
     prm.enter_subsection("Convergence study");
     ReferenceSolutionSelector<dim>::declare_parameters(prm);
     prm.declare_entry("Points", "", Patterns::Anything(),
@@ -172,6 +173,7 @@ namespace lithostress
       surface_boundary =
         model.boundary_id(surface, "Output/Surface profile boundary");
     thin_plate.parse_parameters(prm, materials, length_scale);
+    griffith.parse_parameters(prm);
     if (thin_plate.enabled && surface.empty())
       throw_input_error("Thin plate comparison/Enabled",
                         "needs Output/Surface profile boundary");
@@ -394,7 +396,7 @@ namespace lithostress
         TimerOutput::Scope t(*timer, "output");
         if (!solution_output.last_only || cycle + 1 == refinement.n_cycles)
           solution_output.write(output_directory, cycle, dof_handler, *fe_space,
-                              materials, plane_state, solution);
+                              materials, plane_state, griffith, solution);
       }
 
     if (!study.empty())

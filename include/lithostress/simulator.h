@@ -19,6 +19,7 @@
 #include <lithostress/output/run_log.h>
 #include <lithostress/output/solution_output.h>
 #include <lithostress/postprocess/convergence_study.h>
+#include <lithostress/postprocess/griffith_failure.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
 #include <lithostress/refinement/mesh_refinement.h>
 #include <lithostress/reference_solutions/reference_solution.h>
@@ -126,6 +127,7 @@ namespace lithostress
     std::vector<Point<dim>>            points;
     types::boundary_id                 surface_boundary = numbers::invalid_boundary_id;
     ThinPlateFlexure                   thin_plate;
+    GriffithFailure                    griffith;
     std::vector<std::array<double, 5>> thin_plate_profile;
     ConvergenceStudy                   study;
     CycleStatistics                    statistics;

@@ -43,13 +43,15 @@ namespace lithostress
                              const FiniteElementSpace<dim> &      fe_space,
                              const MaterialLibrary &              materials,
                              const PlaneState                     plane_state,
+                             const GriffithFailure &              griffith,
                              const TrilinosWrappers::MPI::Vector &solution)
   {
     if (!enabled)
       return;
     const StressPostprocessor<dim> postprocessor(materials,
                                                  plane_state,
-                                                 fe_space.n_fields());
+                                                 fe_space.n_fields(),
+                                                 griffith);
     DataOut<dim>                   data_out;
     DataOutBase::VtkFlags          flags;
     flags.write_higher_order_cells = true;

@@ -7,10 +7,12 @@ namespace lithostress
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(const MaterialLibrary &materials,
                                                 const PlaneState plane_state,
-                                                const unsigned int n_fields)
+                                                const unsigned int n_fields,
+                                                const GriffithFailure &griffith)
     : materials(materials)
     , plane_state(plane_state)
     , n_fields(n_fields)
+    , griffith(griffith)
   {}
 
   template <int dim>
@@ -29,6 +31,9 @@ namespace lithostress
     names.emplace_back("deviatoric_yy");
     names.emplace_back("deviatoric_zz");
     names.emplace_back("deviatoric_xy");
+    names.emplace_back("griffith_degree_of_failure");
+    names.emplace_back("griffith_regime");
+    names.emplace_back("griffith_fracture_angle");
     return names;
   }
 
@@ -44,7 +49,7 @@ namespace lithostress
       i.push_back(DataComponentInterpretation::component_is_scalar);
     for (unsigned int d = 0; d < dim; ++d)
       i.push_back(DataComponentInterpretation::component_is_part_of_vector);
-    for (unsigned int k = 0; k < 4; ++k)
+    for (unsigned int k = 0; k < 7; ++k)
       i.push_back(DataComponentInterpretation::component_is_scalar);
     return i;
   }
@@ -62,9 +67,9 @@ namespace lithostress
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>> &               computed) const
   {
-    const auto cell = inputs.template get_cell<dim>();
-    const ElasticModuli<dim> moduli(materials(cell->material_id()),
-                                    plane_state);
+    const auto               cell     = inputs.template get_cell<dim>();
+    const Material &         material = materials(cell->material_id());
+    const ElasticModuli<dim> moduli(material, plane_state);
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
         Tensor<1, dim> u;
@@ -95,6 +100,12 @@ namespace lithostress
         computed[q][k++]  = stress[1][1] - mean;
         computed[q][k++]  = sigma_zz - mean;
         computed[q][k++]  = stress[0][1];
+        const GriffithFailure::Result g =
+          griffith.evaluate(p.sigma_1, p.sigma_2, material.tensile_strength);
+        const bool tested = g.regime != GriffithFailure::Regime::not_tested;
+        computed[q][k++]  = tested ? g.degree_of_failure : 1.0;
+        computed[q][k++]  = tested ? static_cast<double>(g.regime) : -1.0;
+        computed[q][k++]  = tested ? g.fracture_angle * 180 / numbers::PI : 0.0;
       }
   }
 

@@ -47,6 +47,7 @@ pvd = open(os.path.join(out, "solution.pvd")).read()
 check(all(("solution_%03d.pvtu" % c) in pvd for c in range(3)), "solution.pvd lists the .pvtu of every cycle")
 pvtu = open(os.path.join(out, "solution_002.pvtu")).read()
 for field in ("displacement", "stress", "sigma_zz", "sigma_1", "sigma_2", "sigma_1_direction",
-              "deviatoric_xx", "material_id", "mpi_rank"):
+              "deviatoric_xx", "griffith_degree_of_failure", "griffith_regime", "griffith_fracture_angle",
+              "material_id", "mpi_rank"):
     check('Name="%s"' % field in pvtu, "output has the field %s" % field)
 finish()

@@ -7,6 +7,7 @@
 
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/postprocess/griffith_failure.h>
 
 #include <string>
 #include <utility>
@@ -19,7 +20,8 @@ namespace lithostress
    * `.pvd` collection of all cycles. Cells are written as higher-order
    * Lagrange cells through the degree-p mapping, so curved boundaries and
    * interfaces appear curved. Fields: displacement, stress tensor, σ_zz,
-   * material id and MPI rank.
+   * principal and deviatoric stresses, the Griffith test, material id and
+   * MPI rank.
    */
   template <int dim>
   class SolutionOutput
@@ -39,6 +41,7 @@ namespace lithostress
           const FiniteElementSpace<dim> &      fe_space,
           const MaterialLibrary &              materials,
           const PlaneState                     plane_state,
+          const GriffithFailure &              griffith,
           const TrilinosWrappers::MPI::Vector &solution);
 
     bool enabled = true;

@@ -5,6 +5,7 @@
 
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/material.h>
+#include <lithostress/postprocess/griffith_failure.h>
 
 namespace lithostress
 {
@@ -25,8 +26,11 @@ namespace lithostress
    * FE_Nothing fields are zero), the in-plane stress tensor, σ_zz, the
    * principal stresses σ1 ≥ σ2 with the unit direction of σ1, and the
    * deviatoric stresses relative to the mean of the three principal
-   * stresses (thesis DEVST), tension positive, evaluated with the moduli of
-   * each cell's material.
+   * stresses (thesis DEVST), and the modified Griffith test of the
+   * material's tensile strength (degree of failure C, regime 0–3 and the fracture
+   * angle in degrees; where T = 0 the test is not made: regime −1, C = 1; SPEC §3.6 — the lithostatic pressure
+   * that FAIL adds without body forces is not added yet), tension positive,
+   * evaluated with the moduli of each cell's material.
    */
   template <int dim>
   class StressPostprocessor : public DataPostprocessor<dim>
@@ -34,7 +38,8 @@ namespace lithostress
   public:
     StressPostprocessor(const MaterialLibrary &materials,
                         const PlaneState       plane_state,
-                        const unsigned int     n_fields);
+                        const unsigned int     n_fields,
+                        const GriffithFailure &griffith);
 
     void
     evaluate_vector_field(
@@ -54,6 +59,7 @@ namespace lithostress
     const MaterialLibrary &materials;
     const PlaneState       plane_state;
     const unsigned int     n_fields;
+    const GriffithFailure &griffith;
   };
 } // namespace lithostress
 
