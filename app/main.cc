@@ -20,14 +20,16 @@ namespace
   {
     out
       << "lithostress — finite-element stress and deformation of 2-D\n"
-         "lithospheric cross sections (deal.II, Q2 elements, p4est, Trilinos).\n"
+         "lithospheric cross sections (deal.II, Q2 elements, p4est, "
+         "Trilinos).\n"
          "\n"
          "Usage:\n"
          "  lithostress model.prm [--set 'Section/Entry=value' ...]\n"
          "  mpirun -np N lithostress model.prm\n"
          "  lithostress --print-parameters        every parameter, with its\n"
          "                                        documentation, default and\n"
-         "                                        allowed values (.prm format)\n"
+         "                                        allowed values (.prm "
+         "format)\n"
          "  lithostress --print-parameters=json   the same as JSON (used to\n"
          "                                        generate doc/parameters.md)\n"
          "  lithostress --help                    this text\n"
@@ -69,9 +71,9 @@ main(int argc, char *argv[])
           declare(prm, nullptr);
           if (root)
             prm.print_parameters(std::cout,
-                                 a == "--print-parameters" ?
-                                   ParameterHandler::PRM :
-                                   ParameterHandler::JSON);
+                                 a == "--print-parameters"
+                                   ? ParameterHandler::PRM
+                                   : ParameterHandler::JSON);
           return 0;
         }
       if (a == "--set")
@@ -133,8 +135,7 @@ main(int argc, char *argv[])
     }
   catch (const std::exception &error)
     {
-      std::cerr << "lithostress: internal error: " << error.what()
-                << std::endl;
+      std::cerr << "lithostress: internal error: " << error.what() << std::endl;
       return 2;
     }
   return 0;

@@ -25,20 +25,29 @@ namespace lithostress
   Simulator<dim>::declare_parameters(ParameterHandler &prm,
                                      ParameterHandler *first_pass)
   {
-    prm.declare_entry("Output directory", "output", Patterns::Anything(),
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::Anything(),
                       "Directory for all results; created if missing.");
-    prm.declare_entry("Plane state", "plane strain",
+    prm.declare_entry("Plane state",
+                      "plane strain",
                       Patterns::Selection("plane strain|plane stress"),
                       "Plane strain (sigma_zz reported) or plane stress.");
     prm.enter_subsection("Discretization");
-    prm.declare_entry("Polynomial degree", "2", Patterns::Integer(1, 4),
+    prm.declare_entry("Polynomial degree",
+                      "2",
+                      Patterns::Integer(1, 4),
                       "Degree p of the Lagrange elements (Q2 by default).");
-    prm.declare_entry("Mapping degree", "2", Patterns::Integer(1, 4),
+    prm.declare_entry("Mapping degree",
+                      "2",
+                      Patterns::Integer(1, 4),
                       "Degree of the mapping used in assembly, errors and "
                       "output on meshes with curved manifolds; 1 = "
                       "straight-sided cells. Meshes without curved parts "
                       "always use degree 1, which is the same geometry.");
-    prm.declare_entry("Use manifolds", "true", Patterns::Bool(),
+    prm.declare_entry("Use manifolds",
+                      "true",
+                      Patterns::Bool(),
                       "Attach the geometry's manifolds (curved boundaries); "
                       "false = new vertices on straight lines (for tests).");
     prm.leave_subsection();
@@ -50,7 +59,9 @@ namespace lithostress
     LinearSolverSelector<dim>::declare_parameters(prm);
     SolutionOutput<dim>::declare_parameters(prm);
     prm.enter_subsection("Output");
-    prm.declare_entry("Surface profile boundary", "", Patterns::Anything(),
+    prm.declare_entry("Surface profile boundary",
+                      "",
+                      Patterns::Anything(),
                       "Boundary part whose displacement is written to "
                       "surface_profile.csv (x, y, u_x, u_y in m, sorted by "
                       "x) each cycle; empty = none.");
@@ -59,7 +70,9 @@ namespace lithostress
     GriffithFailure::declare_parameters(prm);
     prm.enter_subsection("Convergence study");
     ReferenceSolutionSelector<dim>::declare_parameters(prm);
-    prm.declare_entry("Points", "", Patterns::Anything(),
+    prm.declare_entry("Points",
+                      "",
+                      Patterns::Anything(),
                       "Points at which displacement and stress are reported "
                       "each cycle: `x1, y1; x2, y2` [length unit].");
     prm.leave_subsection();
@@ -67,22 +80,22 @@ namespace lithostress
 
   template <int dim>
   Simulator<dim>::Simulator(const MPI_Comm communicator, ParameterHandler &prm)
-    : communicator(communicator)
-    , prm(prm)
-    , log(communicator)
-    , timer_stream(timer_text,
-                   Utilities::MPI::this_mpi_process(communicator) == 0)
-    , timer(std::make_unique<TimerOutput>(communicator,
-                                          timer_stream,
-                                          TimerOutput::never,
-                                          TimerOutput::wall_times))
-    , triangulation(communicator,
-                    // No island elimination: adaptive refinement at a
-                    // singularity must be able to refine a single cell, and
-                    // the mesh must not depend on the partition.
-                    Triangulation<dim>::limit_level_difference_at_vertices)
-    , dof_handler(triangulation)
-    , wall_clock(communicator, true)
+      : communicator(communicator)
+      , prm(prm)
+      , log(communicator)
+      , timer_stream(timer_text,
+                     Utilities::MPI::this_mpi_process(communicator) == 0)
+      , timer(std::make_unique<TimerOutput>(communicator,
+                                            timer_stream,
+                                            TimerOutput::never,
+                                            TimerOutput::wall_times))
+      , triangulation(communicator,
+                      // No island elimination: adaptive refinement at a
+                      // singularity must be able to refine a single cell, and
+                      // the mesh must not depend on the partition.
+                      Triangulation<dim>::limit_level_difference_at_vertices)
+      , dof_handler(triangulation)
+      , wall_clock(communicator, true)
   {
     try
       {
@@ -128,8 +141,9 @@ namespace lithostress
         for (const auto &face : cell->face_iterators())
           curved = curved || face->manifold_id() != numbers::flat_manifold_id;
       }
-    fe_space = std::make_unique<FiniteElementSpace<dim>>(
-      degree, curved ? mapping_degree : 1);
+    fe_space =
+      std::make_unique<FiniteElementSpace<dim>>(degree,
+                                                curved ? mapping_degree : 1);
 
     // Every material id and boundary part of the coarse mesh (the same on
     // all ranks).
@@ -150,9 +164,9 @@ namespace lithostress
                                                        materials,
                                                        plane_state,
                                                        length_scale);
-    points =
-      parse_point_list<dim>(prm.get("Points"), "Convergence study/Points",
-                            length_scale);
+    points    = parse_point_list<dim>(prm.get("Points"),
+                                   "Convergence study/Points",
+                                   length_scale);
     prm.leave_subsection();
 
     ModelDescription<dim> model;
@@ -167,7 +181,8 @@ namespace lithostress
     prescribed_displacement.parse_parameters(prm, model);
 
     prm.enter_subsection("Output");
-    const std::string surface = Utilities::trim(prm.get("Surface profile boundary"));
+    const std::string surface =
+      Utilities::trim(prm.get("Surface profile boundary"));
     prm.leave_subsection();
     if (!surface.empty())
       surface_boundary =
@@ -191,11 +206,12 @@ namespace lithostress
               {
                 const Point<dim> unit =
                   fe_space->mapping().transform_real_to_unit_cell(cell, p);
-                inside = inside ||
-                         GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-8);
+                inside =
+                  inside || GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-8);
               }
             catch (...)
-              {}
+              {
+              }
           }
         if (!inside)
           throw_input_error("Convergence study/Points",
@@ -229,7 +245,8 @@ namespace lithostress
       }
     problem = Utilities::MPI::broadcast(communicator, problem, 0);
     if (!problem.empty())
-      throw_input_error("Output directory", "<" + output_directory + ">: " + problem);
+      throw_input_error("Output directory",
+                        "<" + output_directory + ">: " + problem);
   }
 
   template <int dim>
@@ -240,14 +257,17 @@ namespace lithostress
     Timer              clock(communicator, true);
     dof_handler.distribute_dofs(fe_space->fe_collection());
     system.locally_owned = dof_handler.locally_owned_dofs();
-    DoFTools::extract_locally_relevant_dofs(dof_handler, system.locally_relevant);
+    DoFTools::extract_locally_relevant_dofs(dof_handler,
+                                            system.locally_relevant);
     system.constraints.clear();
     system.constraints.reinit(system.locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, system.constraints);
     prescribed_displacement.apply(dof_handler, *fe_space, system.constraints);
     system.constraints.close();
     system.reinit(dof_handler, communicator, linear_solver->needs_matrix());
-    solution.reinit(system.locally_owned, system.locally_relevant, communicator);
+    solution.reinit(system.locally_owned,
+                    system.locally_relevant,
+                    communicator);
     statistics.dofs       = dof_handler.n_dofs();
     statistics.cells      = triangulation.n_global_active_cells();
     statistics.setup_time = clock.wall_time();
@@ -257,9 +277,9 @@ namespace lithostress
   void
   Simulator<dim>::assemble_system()
   {
-    TimerOutput::Scope     t(*timer, "assemble");
-    Timer                  clock(communicator, true);
-    ElasticAssembler<dim>  assembler(*fe_space, materials, plane_state, loads);
+    TimerOutput::Scope    t(*timer, "assemble");
+    Timer                 clock(communicator, true);
+    ElasticAssembler<dim> assembler(*fe_space, materials, plane_state, loads);
     assembler.assemble(dof_handler, system, linear_solver->needs_matrix());
     statistics.assemble_time = clock.wall_time();
   }
@@ -275,7 +295,7 @@ namespace lithostress
     statistics.solver =
       linear_solver->solve(dof_handler, *fe_space, system, owned_solution);
     system.constraints.distribute(owned_solution);
-    solution             = owned_solution;
+    solution              = owned_solution;
     statistics.solve_time = clock.wall_time();
   }
 
@@ -314,15 +334,20 @@ namespace lithostress
     for (unsigned int k = 0; k < values.size(); ++k)
       {
         const std::string at = "@P" + std::to_string(k + 1);
-        study.add("u_x" + at, values[k].displacement[0],
+        study.add("u_x" + at,
+                  values[k].displacement[0],
                   ConvergenceStudy::Kind::functional);
-        study.add("u_y" + at, values[k].displacement[1],
+        study.add("u_y" + at,
+                  values[k].displacement[1],
                   ConvergenceStudy::Kind::functional);
-        study.add("s_xx" + at, values[k].stress[0][0],
+        study.add("s_xx" + at,
+                  values[k].stress[0][0],
                   ConvergenceStudy::Kind::functional);
-        study.add("s_yy" + at, values[k].stress[1][1],
+        study.add("s_yy" + at,
+                  values[k].stress[1][1],
                   ConvergenceStudy::Kind::functional);
-        study.add("s_xy" + at, values[k].stress[0][1],
+        study.add("s_xy" + at,
+                  values[k].stress[0][1],
                   ConvergenceStudy::Kind::functional);
         if (reference)
           study.add("err_u" + at,
@@ -385,8 +410,12 @@ namespace lithostress
           {
             TimerOutput::Scope t(*timer, "refine");
             Timer              clock(communicator, true);
-            refinement.refine(triangulation, dof_handler, *fe_space, materials,
-                              plane_state, solution);
+            refinement.refine(triangulation,
+                              dof_handler,
+                              *fe_space,
+                              materials,
+                              plane_state,
+                              solution);
             statistics.mesh_time = clock.wall_time();
           }
         setup_dofs();
@@ -395,8 +424,14 @@ namespace lithostress
         postprocess(cycle);
         TimerOutput::Scope t(*timer, "output");
         if (!solution_output.last_only || cycle + 1 == refinement.n_cycles)
-          solution_output.write(output_directory, cycle, dof_handler, *fe_space,
-                              materials, plane_state, griffith, solution);
+          solution_output.write(output_directory,
+                                cycle,
+                                dof_handler,
+                                *fe_space,
+                                materials,
+                                plane_state,
+                                griffith,
+                                solution);
       }
 
     if (!study.empty())
@@ -425,8 +460,9 @@ namespace lithostress
   {
     rusage usage;
     getrusage(RUSAGE_SELF, &usage);
-    const double peak_mb = Utilities::MPI::sum(usage.ru_maxrss / 1024.0, communicator);
-    const double total   = wall_clock.wall_time();
+    const double peak_mb =
+      Utilities::MPI::sum(usage.ru_maxrss / 1024.0, communicator);
+    const double total = wall_clock.wall_time();
     if (Utilities::MPI::this_mpi_process(communicator) != 0)
       return;
     std::ofstream out(output_directory + "/statistics.json");

@@ -1,9 +1,9 @@
 #ifndef lithostress_simulator_h
 #define lithostress_simulator_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -21,8 +21,8 @@
 #include <lithostress/postprocess/convergence_study.h>
 #include <lithostress/postprocess/griffith_failure.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
-#include <lithostress/refinement/mesh_refinement.h>
 #include <lithostress/reference_solutions/reference_solution.h>
+#include <lithostress/refinement/mesh_refinement.h>
 #include <lithostress/solvers/linear_solver.h>
 
 #include <memory>
@@ -69,8 +69,7 @@ namespace lithostress
     {
       unsigned long long dofs = 0, cells = 0;
       SolverReport       solver;
-      double             mesh_time = 0, setup_time = 0, assemble_time = 0,
-                         solve_time = 0;
+      double mesh_time = 0, setup_time = 0, assemble_time = 0, solve_time = 0;
     };
 
     const CycleStatistics &
@@ -101,33 +100,33 @@ namespace lithostress
     void
     run_cycles();
 
-    MPI_Comm          communicator;
-    ParameterHandler &prm;
-    RunLog            log;
-    std::ostringstream timer_text;
-    ConditionalOStream timer_stream;
+    MPI_Comm                     communicator;
+    ParameterHandler            &prm;
+    RunLog                       log;
+    std::ostringstream           timer_text;
+    ConditionalOStream           timer_stream;
     std::unique_ptr<TimerOutput> timer;
 
-    std::string                        output_directory;
-    PlaneState                         plane_state;
-    double                             length_scale;
-    std::unique_ptr<GeometryModel<dim>> geometry;
+    std::string                               output_directory;
+    PlaneState                                plane_state;
+    double                                    length_scale;
+    std::unique_ptr<GeometryModel<dim>>       geometry;
     parallel::distributed::Triangulation<dim> triangulation;
-    MaterialLibrary                    materials;
-    std::unique_ptr<ReferenceSolution<dim>> reference;
-    LoadCollection<dim>                loads;
-    PrescribedDisplacement<dim>        prescribed_displacement;
-    std::unique_ptr<FiniteElementSpace<dim>> fe_space;
-    DoFHandler<dim>                    dof_handler;
-    LinearSystem<dim>                  system;
-    TrilinosWrappers::MPI::Vector      solution;
-    std::unique_ptr<LinearSolver<dim>> linear_solver;
-    MeshRefinement<dim>                refinement;
-    SolutionOutput<dim>                solution_output;
-    std::vector<Point<dim>>            points;
-    types::boundary_id                 surface_boundary = numbers::invalid_boundary_id;
-    ThinPlateFlexure                   thin_plate;
-    GriffithFailure                    griffith;
+    MaterialLibrary                           materials;
+    std::unique_ptr<ReferenceSolution<dim>>   reference;
+    LoadCollection<dim>                       loads;
+    PrescribedDisplacement<dim>               prescribed_displacement;
+    std::unique_ptr<FiniteElementSpace<dim>>  fe_space;
+    DoFHandler<dim>                           dof_handler;
+    LinearSystem<dim>                         system;
+    TrilinosWrappers::MPI::Vector             solution;
+    std::unique_ptr<LinearSolver<dim>>        linear_solver;
+    MeshRefinement<dim>                       refinement;
+    SolutionOutput<dim>                       solution_output;
+    std::vector<Point<dim>>                   points;
+    types::boundary_id surface_boundary = numbers::invalid_boundary_id;
+    ThinPlateFlexure   thin_plate;
+    GriffithFailure    griffith;
     std::vector<std::array<double, 5>> thin_plate_profile;
     ConvergenceStudy                   study;
     CycleStatistics                    statistics;

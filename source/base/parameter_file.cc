@@ -17,7 +17,7 @@ namespace lithostress
       std::ostringstream text;
       exc.print_info(text);
       std::string message = text.str();
-        // deal.II's messages are indented over several lines: make them one
+      // deal.II's messages are indented over several lines: make them one
       // line with single spaces.
       std::string one_line;
       for (const char c : message)
@@ -75,8 +75,7 @@ namespace lithostress
             catch (const std::exception &)
               {
                 throw_input_error(entry,
-                                  "<" + coordinates[d] +
-                                    "> is not a number");
+                                  "<" + coordinates[d] + "> is not a number");
               }
           }
         points.push_back(p);
@@ -85,24 +84,23 @@ namespace lithostress
   }
 
   std::vector<std::string>
-  ParameterFile::names_from(ParameterHandler *              first_pass,
+  ParameterFile::names_from(ParameterHandler               *first_pass,
                             const std::vector<std::string> &path,
-                            const std::string &             entry,
+                            const std::string              &entry,
                             const std::vector<std::string> &example)
   {
     if (first_pass == nullptr)
       return example;
     for (const std::string &section : path)
       first_pass->enter_subsection(section);
-    const std::vector<std::string> names =
-      split_list(first_pass->get(entry));
+    const std::vector<std::string> names = split_list(first_pass->get(entry));
     for (unsigned int i = 0; i < path.size(); ++i)
       first_pass->leave_subsection();
     return names;
   }
 
   void
-  ParameterFile::apply_override(ParameterHandler & prm,
+  ParameterFile::apply_override(ParameterHandler  &prm,
                                 const std::string &assignment)
   {
     const auto equal = assignment.find('=');
@@ -132,10 +130,10 @@ namespace lithostress
   }
 
   void
-  ParameterFile::read(const std::string &             filename,
+  ParameterFile::read(const std::string              &filename,
                       const std::vector<std::string> &overrides,
-                      const Declaration &             declare,
-                      ParameterHandler &              prm)
+                      const Declaration              &declare,
+                      ParameterHandler               &prm)
   {
     std::ifstream file(filename);
     if (!file)
@@ -162,7 +160,8 @@ namespace lithostress
             apply_override(first_pass, o);
           }
         catch (const InputError &)
-          {}
+          {
+          }
       }
 
     declare(prm, &first_pass);

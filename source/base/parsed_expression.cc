@@ -14,7 +14,7 @@ namespace lithostress
   ParsedExpression<dim>::ParsedExpression(const std::string &text,
                                           const std::string &constants_text,
                                           const std::string &entry)
-    : expression(text)
+      : expression(text)
   {
     std::map<std::string, double> constants;
     for (const std::string &item : split_list(constants_text))
@@ -39,15 +39,17 @@ namespace lithostress
           }
         if (!ok)
           throw_input_error(entry,
-                            "constant <" + item + "> is not of the form "
-                                                  "name=number");
+                            "constant <" + item +
+                              "> is not of the form "
+                              "name=number");
         constants[Utilities::trim(item.substr(0, equal))] = value;
       }
     const std::string variables = (dim == 2) ? "x,y,t" : "x,y,z,t";
     // muparser's own report goes to std::cerr; keep it out of the one-line
     // error message.
-    std::ostringstream   muparser_report;
-    std::streambuf *const cerr_buffer = std::cerr.rdbuf(muparser_report.rdbuf());
+    std::ostringstream    muparser_report;
+    std::streambuf *const cerr_buffer =
+      std::cerr.rdbuf(muparser_report.rdbuf());
     try
       {
         function = std::make_unique<FunctionParser<dim>>(1);

@@ -20,16 +20,17 @@ namespace lithostress
     public:
       PartDisplacement(
         const std::array<std::unique_ptr<ParsedExpression<dim>>, dim> &c,
-        const std::array<bool, dim> &  from_reference,
+        const std::array<bool, dim>  &from_reference,
         const ReferenceSolution<dim> *reference,
         const unsigned int            n_fields,
         const double                  time)
-        : Function<dim>(dim * n_fields)
-        , c(c)
-        , from_reference(from_reference)
-        , reference(reference)
-        , t(time)
-      {}
+          : Function<dim>(dim * n_fields)
+          , c(c)
+          , from_reference(from_reference)
+          , reference(reference)
+          , t(time)
+      {
+      }
 
       double
       value(const Point<dim> &p, const unsigned int component) const override
@@ -42,9 +43,9 @@ namespace lithostress
 
     private:
       const std::array<std::unique_ptr<ParsedExpression<dim>>, dim> &c;
-      const std::array<bool, dim> &                                  from_reference;
-      const ReferenceSolution<dim> *                                 reference;
-      const double                                                   t;
+      const std::array<bool, dim>  &from_reference;
+      const ReferenceSolution<dim> *reference;
+      const double                  t;
     };
   } // namespace
 
@@ -59,19 +60,25 @@ namespace lithostress
                                 "Prescribed displacement parts",
                                 {"base"});
     prm.enter_subsection("Boundary conditions");
-    prm.declare_entry("Prescribed displacement parts", "", Patterns::Anything(),
+    prm.declare_entry("Prescribed displacement parts",
+                      "",
+                      Patterns::Anything(),
                       "Comma separated boundary parts with a prescribed "
                       "displacement component; each gets a subsection.");
     for (const std::string &name : names)
       {
         prm.enter_subsection(name);
         for (unsigned int d = 0; d < dim; ++d)
-          prm.declare_entry(component_names[d], "", Patterns::Anything(),
+          prm.declare_entry(component_names[d],
+                            "",
+                            Patterns::Anything(),
                             std::string("Prescribed ") + component_names[d] +
                               " displacement [m] as a function of x, y [m] "
                               "and t [s]; empty = free; `reference` = the "
                               "reference solution's.");
-        prm.declare_entry("Constants", "", Patterns::Anything(),
+        prm.declare_entry("Constants",
+                          "",
+                          Patterns::Anything(),
                           "Constants for the expressions: name=value, ...");
         prm.leave_subsection();
       }
@@ -81,7 +88,7 @@ namespace lithostress
   template <int dim>
   void
   PrescribedDisplacement<dim>::parse_parameters(
-    ParameterHandler &           prm,
+    ParameterHandler            &prm,
     const ModelDescription<dim> &model)
   {
     parts.clear();
@@ -98,8 +105,8 @@ namespace lithostress
         bool              any       = false;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            const std::string entry = "Boundary conditions/" + name + "/" +
-                                      component_names[d];
+            const std::string entry =
+              "Boundary conditions/" + name + "/" + component_names[d];
             const std::string text =
               Utilities::trim(prm.get(component_names[d]));
             part.from_reference[d] = (text == "reference");
@@ -133,13 +140,12 @@ namespace lithostress
 
   template <int dim>
   void
-  PrescribedDisplacement<dim>::apply(const DoFHandler<dim> &         dof_handler,
+  PrescribedDisplacement<dim>::apply(const DoFHandler<dim>         &dof_handler,
                                      const FiniteElementSpace<dim> &fe_space,
-                                     AffineConstraints<double> &     constraints,
-                                     const double                    time) const
+                                     AffineConstraints<double>     &constraints,
+                                     const double                   time) const
   {
-    const unsigned int n_components =
-      fe_space.fe_collection().n_components();
+    const unsigned int n_components = fe_space.fe_collection().n_components();
     for (const Part &part : parts)
       {
         std::vector<bool> mask(n_components, false);

@@ -8,14 +8,15 @@ namespace lithostress
   template <int dim>
   ElasticAssembler<dim>::ElasticAssembler(
     const FiniteElementSpace<dim> &fe_space,
-    const MaterialLibrary &        materials,
+    const MaterialLibrary         &materials,
     const PlaneState               plane_state,
-    const LoadCollection<dim> &    loads)
-    : fe_space(fe_space)
-    , materials(materials)
-    , plane_state(plane_state)
-    , loads(loads)
-  {}
+    const LoadCollection<dim>     &loads)
+      : fe_space(fe_space)
+      , materials(materials)
+      , plane_state(plane_state)
+      , loads(loads)
+  {
+  }
 
   template <int dim>
   ElasticModuli<dim>
@@ -27,7 +28,7 @@ namespace lithostress
   template <int dim>
   void
   ElasticAssembler<dim>::assemble(const DoFHandler<dim> &dof_handler,
-                                  LinearSystem<dim> &    system,
+                                  LinearSystem<dim>     &system,
                                   const bool             with_matrix) const
   {
     hp::FEValues<dim>     hp_fe_values(fe_space.mapping_collection(),
@@ -66,7 +67,7 @@ namespace lithostress
           const unsigned int   n         = fe_values.dofs_per_cell;
           const FEValuesExtractors::Vector u =
             fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
-          const Material &          material = materials(cell->material_id());
+          const Material           &material = materials(cell->material_id());
           const ElasticModuli<dim> &moduli   = moduli_of.at(material.id);
 
           cell_matrix.reinit(n, n);
@@ -78,7 +79,8 @@ namespace lithostress
               // shape function φ_i = N_i e_{c_i} of the primitive element has
               // one nonzero component, so
               //   ε(φ_i) : C ε(φ_j) = λ ∂_{c_i}N_i ∂_{c_j}N_j
-              //                      + μ (∂_{c_j}N_i ∂_{c_i}N_j + δ_{c_i c_j} ∇N_i·∇N_j).
+              //                      + μ (∂_{c_j}N_i ∂_{c_i}N_j + δ_{c_i c_j}
+              //                      ∇N_i·∇N_j).
               const FiniteElement<dim> &fe = cell->get_fe();
               component.resize(n);
               for (unsigned int i = 0; i < n; ++i)
@@ -141,7 +143,10 @@ namespace lithostress
                                                           system.rhs);
         }
     for (const auto &load : loads.loads())
-      load->add_point_terms(dof_handler, fe_space, system.constraints, system.rhs);
+      load->add_point_terms(dof_handler,
+                            fe_space,
+                            system.constraints,
+                            system.rhs);
     if (with_matrix)
       system.matrix.compress(VectorOperation::add);
     system.rhs.compress(VectorOperation::add);

@@ -11,10 +11,10 @@ namespace lithostress
   FiniteElementSpace<dim>::FiniteElementSpace(const unsigned int degree,
                                               const unsigned int mapping_degree,
                                               const unsigned int n_fields)
-    : polynomial_degree(degree)
-    , n_displacement_fields(n_fields)
-    , mapping_q(std::make_unique<MappingQ<dim>>(mapping_degree))
-    , mappings(*mapping_q)
+      : polynomial_degree(degree)
+      , n_displacement_fields(n_fields)
+      , mapping_q(std::make_unique<MappingQ<dim>>(mapping_degree))
+      , mappings(*mapping_q)
   {
     const FE_Q<dim> q(degree);
     scalar_support_points = q.get_unit_support_points();

@@ -17,10 +17,14 @@ namespace lithostress
   GmshMesh<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Gmsh");
-    prm.declare_entry("Mesh file", "", Patterns::Anything(),
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::Anything(),
                       "Path of a quadrilateral Gmsh .msh file (ASCII, format "
                       "2 or 4), relative to the working directory.");
-    prm.declare_entry("Circular arcs", "", Patterns::Anything(),
+    prm.declare_entry("Circular arcs",
+                      "",
+                      Patterns::Anything(),
                       "Boundary parts that are circular arcs, with their "
                       "centres: `name: x, y; name2: x, y` [length unit].");
     prm.leave_subsection();
@@ -52,8 +56,9 @@ namespace lithostress
         if (boundary_names.count(name) == 0)
           throw_input_error("Geometry/Gmsh/Circular arcs",
                             "the mesh has no boundary part <" + name + ">");
-        const auto centre = parse_point_list<dim>(
-          item.substr(colon + 1), "Geometry/Gmsh/Circular arcs", scale);
+        const auto centre = parse_point_list<dim>(item.substr(colon + 1),
+                                                  "Geometry/Gmsh/Circular arcs",
+                                                  scale);
         arcs.emplace_back(name, centre[0]);
       }
   }
@@ -123,9 +128,9 @@ namespace lithostress
     std::vector<TransfiniteInterpolationManifold<dim>> transfinite(arcs.size());
     for (unsigned int k = 0; k < arcs.size(); ++k)
       {
-        const types::boundary_id   b  = boundary_names.at(arcs[k].first);
-        const types::manifold_id   arc_id  = 2 * k + 1;
-        const types::manifold_id   cell_id = 2 * k + 2;
+        const types::boundary_id b       = boundary_names.at(arcs[k].first);
+        const types::manifold_id arc_id  = 2 * k + 1;
+        const types::manifold_id cell_id = 2 * k + 2;
         for (const auto &cell : tria.active_cell_iterators())
           for (const auto &face : cell->face_iterators())
             if (face->at_boundary() && face->boundary_id() == b)

@@ -10,7 +10,9 @@ namespace lithostress
   LShapedDomain<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("L-shaped domain");
-    prm.declare_entry("Half size", "1", Patterns::Double(),
+    prm.declare_entry("Half size",
+                      "1",
+                      Patterns::Double(),
                       "Half the side s of the square [-s, s]^2 [length unit].");
     prm.leave_subsection();
   }
@@ -39,8 +41,8 @@ namespace lithostress
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
           {
-            const Point<2> c = face->center();
-            const bool on_notch = (std::abs(c[0]) < tol && c[1] > 0) ||
+            const Point<2> c        = face->center();
+            const bool     on_notch = (std::abs(c[0]) < tol && c[1] > 0) ||
                                   (std::abs(c[1]) < tol && c[0] > 0);
             face->set_boundary_id(on_notch ? 1 : 0);
           }

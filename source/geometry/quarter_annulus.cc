@@ -14,18 +14,30 @@ namespace lithostress
   QuarterAnnulus<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Quarter annulus");
-    prm.declare_entry("Inner radius", "2", Patterns::Double(),
+    prm.declare_entry("Inner radius",
+                      "2",
+                      Patterns::Double(),
                       "Inner radius a [length unit].");
-    prm.declare_entry("Outer radius", "4", Patterns::Double(),
+    prm.declare_entry("Outer radius",
+                      "4",
+                      Patterns::Double(),
                       "Outer radius b of the body [length unit].");
-    prm.declare_entry("Shell thickness", "0", Patterns::Double(0),
+    prm.declare_entry("Shell thickness",
+                      "0",
+                      Patterns::Double(0),
                       "Thickness t of an outer shell b < r < b + t "
                       "(material id 1); 0 = no shell [length unit].");
-    prm.declare_entry("Cells around", "2", Patterns::Integer(1),
+    prm.declare_entry("Cells around",
+                      "2",
+                      Patterns::Integer(1),
                       "Coarse cells along the quarter circle.");
-    prm.declare_entry("Cells radially", "2", Patterns::Integer(1),
+    prm.declare_entry("Cells radially",
+                      "2",
+                      Patterns::Integer(1),
                       "Coarse cells across the body a < r < b.");
-    prm.declare_entry("Cells in shell", "1", Patterns::Integer(1),
+    prm.declare_entry("Cells in shell",
+                      "1",
+                      Patterns::Integer(1),
                       "Coarse cells across the shell.");
     prm.leave_subsection();
   }
@@ -64,8 +76,8 @@ namespace lithostress
       for (unsigned int i = 1; i <= cells_in_shell; ++i)
         radii.push_back(outer_radius + shell_thickness * i / cells_in_shell);
 
-    const unsigned int     n_r = radii.size();
-    std::vector<Point<2>>  vertices;
+    const unsigned int    n_r = radii.size();
+    std::vector<Point<2>> vertices;
     for (unsigned int j = 0; j <= cells_around; ++j)
       {
         const double theta = 0.5 * numbers::PI * j / cells_around;
@@ -93,7 +105,8 @@ namespace lithostress
         if (face->at_boundary())
           {
             const Point<2> c = face->center();
-            const double   r = (face->vertex(0).norm() + face->vertex(1).norm()) / 2;
+            const double   r =
+              (face->vertex(0).norm() + face->vertex(1).norm()) / 2;
             if (std::abs(c[0]) < tol)
               face->set_boundary_id(2);
             else if (std::abs(c[1]) < tol)

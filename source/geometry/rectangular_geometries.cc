@@ -18,11 +18,11 @@ namespace lithostress
   namespace
   {
     void
-    make_rectangle(Triangulation<2> &       tria,
-                   const Point<2> &         p0,
-                   const Point<2> &         p1,
-                   const unsigned int       nx,
-                   const unsigned int       ny)
+    make_rectangle(Triangulation<2>  &tria,
+                   const Point<2>    &p0,
+                   const Point<2>    &p1,
+                   const unsigned int nx,
+                   const unsigned int ny)
     {
       GridGenerator::subdivided_hyper_rectangle(tria, {nx, ny}, p0, p1, true);
       // Colorizing also numbers the cells; the block is one material.
@@ -31,7 +31,7 @@ namespace lithostress
     }
 
     unsigned int
-    positive_count(ParameterHandler &prm,
+    positive_count(ParameterHandler  &prm,
                    const std::string &entry,
                    const std::string &where)
     {
@@ -42,7 +42,7 @@ namespace lithostress
     }
 
     double
-    positive_length(ParameterHandler & prm,
+    positive_length(ParameterHandler  &prm,
                     const std::string &entry,
                     const std::string &where,
                     const double       scale)
@@ -81,9 +81,11 @@ namespace lithostress
                                           const double      scale)
   {
     prm.enter_subsection("Rectangular block");
-    const auto xs = Utilities::string_to_double(split_list(prm.get("X extent")));
-    const auto ys = Utilities::string_to_double(split_list(prm.get("Y extent")));
-    const auto n  = Utilities::string_to_int(split_list(prm.get("Cells")));
+    const auto xs =
+      Utilities::string_to_double(split_list(prm.get("X extent")));
+    const auto ys =
+      Utilities::string_to_double(split_list(prm.get("Y extent")));
+    const auto n = Utilities::string_to_int(split_list(prm.get("Cells")));
     prm.leave_subsection();
     x0 = xs[0] * scale;
     x1 = xs[1] * scale;
@@ -211,13 +213,11 @@ namespace lithostress
   ThinPlate<dim>::create_coarse_mesh(
     parallel::distributed::Triangulation<dim> &tria) const
   {
-    const unsigned int along = std::max<unsigned int>(
-      1, std::lround(length / thickness * cells_through));
-    make_rectangle(tria,
-                   Point<2>(0, -thickness),
-                   Point<2>(length, 0),
-                   along,
-                   cells_through);
+    const unsigned int along =
+      std::max<unsigned int>(1,
+                             std::lround(length / thickness * cells_through));
+    make_rectangle(
+      tria, Point<2>(0, -thickness), Point<2>(length, 0), along, cells_through);
   }
 
   template <int dim>
@@ -237,11 +237,12 @@ namespace lithostress
                       "100",
                       Patterns::Double(),
                       "Width W of the box, x in [0, W] [length unit].");
-    prm.declare_entry("Layer interfaces",
-                      "0, -10, -20",
-                      Patterns::List(Patterns::Double(), 2),
-                      "Heights y of the top, of each interface and of the base, "
-                      "from the top down [length unit].");
+    prm.declare_entry(
+      "Layer interfaces",
+      "0, -10, -20",
+      Patterns::List(Patterns::Double(), 2),
+      "Heights y of the top, of each interface and of the base, "
+      "from the top down [length unit].");
     prm.declare_entry("Layer names",
                       "upper, lower",
                       Patterns::List(Patterns::Anything()),

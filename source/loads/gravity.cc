@@ -7,9 +7,13 @@ namespace lithostress
   Gravity<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Gravity");
-    prm.declare_entry("Enabled", "false", Patterns::Bool(),
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
                       "Apply the body force -rho g in y to every material.");
-    prm.declare_entry("Acceleration", "9.81", Patterns::Double(0),
+    prm.declare_entry("Acceleration",
+                      "9.81",
+                      Patterns::Double(0),
                       "Gravitational acceleration g [m/s^2].");
     prm.leave_subsection();
   }
@@ -27,9 +31,9 @@ namespace lithostress
 
   template <int dim>
   void
-  Gravity<dim>::add_cell_terms(const FEValues<dim> &             fe_values,
+  Gravity<dim>::add_cell_terms(const FEValues<dim>              &fe_values,
                                const FEValuesExtractors::Vector &displacement,
-                               const Material &                  material,
+                               const Material                   &material,
                                const ElasticModuli<dim> &,
                                FullMatrix<double> &,
                                Vector<double> &cell_rhs) const

@@ -9,13 +9,19 @@ namespace lithostress
   IsostaticRestoringForce<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Isostatic restoring force");
-    prm.declare_entry("Boundary parts", "", Patterns::Anything(),
+    prm.declare_entry("Boundary parts",
+                      "",
+                      Patterns::Anything(),
                       "Comma separated boundary parts in contact with a "
                       "fluid (e.g. base: mantle, top: water or sediment).");
-    prm.declare_entry("Fluid densities", "", Patterns::Anything(),
+    prm.declare_entry("Fluid densities",
+                      "",
+                      Patterns::Anything(),
                       "Density rho_f [kg/m^3] of the fluid on each part, in "
                       "the same order; > 0.");
-    prm.declare_entry("Gravity", "9.81", Patterns::Double(0),
+    prm.declare_entry("Gravity",
+                      "9.81",
+                      Patterns::Double(0),
                       "Gravitational acceleration g [m/s^2] of the restoring "
                       "force rho_f g u_y.");
     prm.leave_subsection();
@@ -24,7 +30,7 @@ namespace lithostress
   template <int dim>
   void
   IsostaticRestoringForce<dim>::parse_parameters(
-    ParameterHandler &           prm,
+    ParameterHandler            &prm,
     const ModelDescription<dim> &model)
   {
     const std::string where = "Loads/Isostatic restoring force/";
@@ -57,7 +63,8 @@ namespace lithostress
           throw_input_error(where + "Fluid densities",
                             "the density of the fluid on <" + names[i] +
                               "> must be positive, got " + densities[i]);
-        parts.emplace_back(model.boundary_id(names[i], where + "Boundary parts"),
+        parts.emplace_back(model.boundary_id(names[i],
+                                             where + "Boundary parts"),
                            rho * g);
       }
   }
@@ -83,20 +90,20 @@ namespace lithostress
   template <int dim>
   void
   IsostaticRestoringForce<dim>::add_boundary_terms(
-    const FEFaceValues<dim> &         fe_face_values,
+    const FEFaceValues<dim>          &fe_face_values,
     const types::boundary_id          id,
     const FEValuesExtractors::Vector &displacement,
-    FullMatrix<double> &              cell_matrix,
+    FullMatrix<double>               &cell_matrix,
     Vector<double> &) const
   {
-    const double       k = stiffness(id);
-    const unsigned int n = fe_face_values.dofs_per_cell;
+    const double        k = stiffness(id);
+    const unsigned int  n = fe_face_values.dofs_per_cell;
     std::vector<double> phi_y(n);
     for (const unsigned int q : fe_face_values.quadrature_point_indices())
       {
-        const double w =
-          k * std::abs(fe_face_values.normal_vector(q)[dim - 1]) *
-          fe_face_values.JxW(q);
+        const double w = k *
+                         std::abs(fe_face_values.normal_vector(q)[dim - 1]) *
+                         fe_face_values.JxW(q);
         for (unsigned int i = 0; i < n; ++i)
           phi_y[i] = fe_face_values[displacement].value(i, q)[dim - 1];
         for (unsigned int i = 0; i < n; ++i)

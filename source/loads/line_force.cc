@@ -11,10 +11,14 @@ namespace lithostress
   LineForce<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Line forces");
-    prm.declare_entry("Points", "", Patterns::Anything(),
+    prm.declare_entry("Points",
+                      "",
+                      Patterns::Anything(),
                       "Where the line forces act: `x1, y1; x2, y2` [length "
                       "unit]; each is applied at the nearest mesh vertex.");
-    prm.declare_entry("Forces", "", Patterns::Anything(),
+    prm.declare_entry("Forces",
+                      "",
+                      Patterns::Anything(),
                       "The force vector at each point: `fx1, fy1; fx2, fy2` "
                       "[N/m], y up (a downward load has negative fy).");
     prm.leave_subsection();
@@ -22,12 +26,13 @@ namespace lithostress
 
   template <int dim>
   void
-  LineForce<dim>::parse_parameters(ParameterHandler &           prm,
+  LineForce<dim>::parse_parameters(ParameterHandler            &prm,
                                    const ModelDescription<dim> &model)
   {
     const std::string where = "Loads/Line forces/";
     prm.enter_subsection("Line forces");
-    points = parse_point_list<dim>(prm.get("Points"), where + "Points",
+    points = parse_point_list<dim>(prm.get("Points"),
+                                   where + "Points",
                                    model.length_scale);
     const auto f =
       parse_point_list<dim>(prm.get("Forces"), where + "Forces", 1.0);
@@ -44,22 +49,21 @@ namespace lithostress
   template <int dim>
   void
   LineForce<dim>::check_against_mesh(const Triangulation<dim> &tria,
-                                     const Mapping<dim> &      mapping) const
+                                     const Mapping<dim>       &mapping) const
   {
     for (const Point<dim> &p : points)
       if (!point_in_mesh(tria, mapping, p))
         throw_input_error("Loads/Line forces/Points",
                           "the point (" + std::to_string(p[0]) + ", " +
-                            std::to_string(p[1]) +
-                            ") [m] is outside the body");
+                            std::to_string(p[1]) + ") [m] is outside the body");
   }
 
   template <int dim>
   void
-  LineForce<dim>::add_point_terms(const DoFHandler<dim> &          dof_handler,
+  LineForce<dim>::add_point_terms(const DoFHandler<dim> &dof_handler,
                                   const FiniteElementSpace<dim> &,
                                   const AffineConstraints<double> &constraints,
-                                  TrilinosWrappers::MPI::Vector &  rhs) const
+                                  TrilinosWrappers::MPI::Vector   &rhs) const
   {
     const MPI_Comm     comm = dof_handler.get_communicator();
     const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
@@ -82,14 +86,15 @@ namespace lithostress
                     best_vertex = v;
                   }
               }
-        const double smallest = Utilities::MPI::min(distance, comm);
+        const double       smallest = Utilities::MPI::min(distance, comm);
         const unsigned int owner =
-          Utilities::MPI::min(distance == smallest ? rank :
-                                                     std::numeric_limits<unsigned int>::max(),
+          Utilities::MPI::min(distance == smallest
+                                ? rank
+                                : std::numeric_limits<unsigned int>::max(),
                               comm);
         if (owner != rank)
           continue;
-        const unsigned int fe_index = best->active_fe_index();
+        const unsigned int                   fe_index = best->active_fe_index();
         std::vector<types::global_dof_index> dofs(dim);
         Vector<double>                       values(dim);
         for (unsigned int d = 0; d < dim; ++d)

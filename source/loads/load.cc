@@ -29,7 +29,8 @@ namespace lithostress
                             const ElasticModuli<dim> &,
                             FullMatrix<double> &,
                             Vector<double> &) const
-  {}
+  {
+  }
 
   template <int dim>
   bool
@@ -45,7 +46,8 @@ namespace lithostress
                                 const FEValuesExtractors::Vector &,
                                 FullMatrix<double> &,
                                 Vector<double> &) const
-  {}
+  {
+  }
 
   template <int dim>
   void
@@ -53,36 +55,42 @@ namespace lithostress
                              const FiniteElementSpace<dim> &,
                              const AffineConstraints<double> &,
                              TrilinosWrappers::MPI::Vector &) const
-  {}
+  {
+  }
 
   template <int dim>
   void
   Load<dim>::check_against_mesh(const Triangulation<dim> &,
                                 const Mapping<dim> &) const
-  {}
+  {
+  }
 
   template <int dim>
   bool
   point_in_mesh(const Triangulation<dim> &tria,
-                const Mapping<dim> &      mapping,
-                const Point<dim> &        p)
+                const Mapping<dim>       &mapping,
+                const Point<dim>         &p)
   {
     for (const auto &cell : tria.cell_iterators_on_level(0))
       {
         try
           {
-            const Point<dim> unit = mapping.transform_real_to_unit_cell(cell, p);
+            const Point<dim> unit =
+              mapping.transform_real_to_unit_cell(cell, p);
             if (GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-8))
               return true;
           }
         catch (const typename Mapping<dim>::ExcTransformationFailed &)
-          {}
+          {
+          }
       }
     return false;
   }
 
   template bool
-  point_in_mesh<2>(const Triangulation<2> &, const Mapping<2> &, const Point<2> &);
+  point_in_mesh<2>(const Triangulation<2> &,
+                   const Mapping<2> &,
+                   const Point<2> &);
   template struct ModelDescription<2>;
   template class Load<2>;
 } // namespace lithostress

@@ -21,7 +21,7 @@ namespace lithostress
 
   template <int dim>
   void
-  LoadCollection<dim>::parse_parameters(ParameterHandler &           prm,
+  LoadCollection<dim>::parse_parameters(ParameterHandler            &prm,
                                         const ModelDescription<dim> &model)
   {
     active.clear();

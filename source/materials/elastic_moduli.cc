@@ -11,22 +11,23 @@ namespace lithostress
     if (text == "plane stress")
       return PlaneState::plane_stress;
     throw_input_error("Plane state",
-                      "<" + text + "> is neither plane strain nor plane stress");
+                      "<" + text +
+                        "> is neither plane strain nor plane stress");
   }
 
   template <int dim>
-  ElasticModuli<dim>::ElasticModuli(const Material &   material,
+  ElasticModuli<dim>::ElasticModuli(const Material  &material,
                                     const PlaneState plane_state)
-    : mu(material.shear_modulus())
-    , lambda_3d(material.lame_lambda())
-    , plane_state(plane_state)
+      : mu(material.shear_modulus())
+      , lambda_3d(material.lame_lambda())
+      , plane_state(plane_state)
   {
-    lambda_in_plane = (plane_state == PlaneState::plane_strain || dim == 3) ?
-                        lambda_3d :
-                        2.0 * lambda_3d * mu / (lambda_3d + 2.0 * mu);
+    lambda_in_plane = (plane_state == PlaneState::plane_strain || dim == 3)
+                        ? lambda_3d
+                        : 2.0 * lambda_3d * mu / (lambda_3d + 2.0 * mu);
     const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
-    C = lambda_in_plane * outer_product(I, I) +
-        2.0 * mu * identity_tensor<dim>();
+    C =
+      lambda_in_plane * outer_product(I, I) + 2.0 * mu * identity_tensor<dim>();
   }
 
   template <int dim>
@@ -36,9 +37,9 @@ namespace lithostress
     // Inverse of λ I⊗I + 2μ 𝕀 is (1/2μ)(𝕀 − λ/(dim λ + 2μ) I⊗I).
     const SymmetricTensor<2, dim> I = unit_symmetric_tensor<dim>();
     return (1.0 / (2.0 * mu)) *
-           (identity_tensor<dim>() -
-            lambda_in_plane / (dim * lambda_in_plane + 2.0 * mu) *
-              outer_product(I, I));
+           (identity_tensor<dim>() - lambda_in_plane /
+                                       (dim * lambda_in_plane + 2.0 * mu) *
+                                       outer_product(I, I));
   }
 
   template <int dim>

@@ -21,8 +21,8 @@ namespace lithostress
   MaterialLibrary::declare_parameters(ParameterHandler &prm,
                                       ParameterHandler *first_pass)
   {
-    const std::vector<std::string> names = ParameterFile::names_from(
-      first_pass, {"Materials"}, "Names", {"rock"});
+    const std::vector<std::string> names =
+      ParameterFile::names_from(first_pass, {"Materials"}, "Names", {"rock"});
     prm.enter_subsection("Materials");
     prm.declare_entry("Names",
                       "rock",
@@ -78,12 +78,12 @@ namespace lithostress
         const std::string where = "Materials/" + name + "/";
         prm.enter_subsection(name);
         Material m;
-        m.name             = name;
-        m.youngs_modulus   = prm.get_double("Young's modulus");
-        m.poissons_ratio   = prm.get_double("Poisson's ratio");
-        m.density          = prm.get_double("Density");
-        m.tensile_strength = prm.get_double("Tensile strength");
-        m.viscosity        = prm.get_double("Viscosity");
+        m.name               = name;
+        m.youngs_modulus     = prm.get_double("Young's modulus");
+        m.poissons_ratio     = prm.get_double("Poisson's ratio");
+        m.density            = prm.get_double("Density");
+        m.tensile_strength   = prm.get_double("Tensile strength");
+        m.viscosity          = prm.get_double("Viscosity");
         const std::string id = Utilities::trim(prm.get("Material id"));
         prm.leave_subsection();
 
@@ -98,8 +98,7 @@ namespace lithostress
         if (m.density < 0)
           throw_input_error(where + "Density", "must not be negative");
         if (m.tensile_strength < 0)
-          throw_input_error(where + "Tensile strength",
-                            "must not be negative");
+          throw_input_error(where + "Tensile strength", "must not be negative");
         if (m.viscosity < 0)
           throw_input_error(where + "Viscosity", "must not be negative");
         if (id.empty())
@@ -118,9 +117,10 @@ namespace lithostress
                   value = -1;
               }
             catch (const std::exception &)
-              {}
-            if (value < 0 ||
-                static_cast<unsigned int>(value) >= numbers::invalid_material_id)
+              {
+              }
+            if (value < 0 || static_cast<unsigned int>(value) >=
+                               numbers::invalid_material_id)
               throw_input_error(where + "Material id",
                                 "<" + id +
                                   "> is not a non-negative integer id");
@@ -135,7 +135,7 @@ namespace lithostress
   void
   MaterialLibrary::resolve(
     const std::map<std::string, types::material_id> &named_regions,
-    const std::set<types::material_id> &             ids_in_mesh)
+    const std::set<types::material_id>              &ids_in_mesh)
   {
     index_of_id.clear();
     for (unsigned int i = 0; i < all.size(); ++i)

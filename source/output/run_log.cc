@@ -5,8 +5,9 @@
 namespace lithostress
 {
   RunLog::RunLog(const MPI_Comm communicator)
-    : is_root(Utilities::MPI::this_mpi_process(communicator) == 0)
-  {}
+      : is_root(Utilities::MPI::this_mpi_process(communicator) == 0)
+  {
+  }
 
   void
   RunLog::open(const std::string &filename)

@@ -13,12 +13,18 @@ namespace lithostress
   SolutionOutput<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    prm.declare_entry("Write ParaView files", "true", Patterns::Bool(),
+    prm.declare_entry("Write ParaView files",
+                      "true",
+                      Patterns::Bool(),
                       "Write .pvtu/.vtu files per cycle and a .pvd record.");
-    prm.declare_entry("ParaView cycles", "all", Patterns::Selection("all|last"),
+    prm.declare_entry("ParaView cycles",
+                      "all",
+                      Patterns::Selection("all|last"),
                       "Write ParaView files for every refinement cycle or "
                       "only for the last.");
-    prm.declare_entry("Subdivisions", "0", Patterns::Integer(0, 8),
+    prm.declare_entry("Subdivisions",
+                      "0",
+                      Patterns::Integer(0, 8),
                       "Patch subdivisions per cell; 0 = the polynomial "
                       "degree (higher-order Lagrange cells).");
     prm.leave_subsection();
@@ -37,13 +43,13 @@ namespace lithostress
 
   template <int dim>
   void
-  SolutionOutput<dim>::write(const std::string &                  directory,
+  SolutionOutput<dim>::write(const std::string                   &directory,
                              const unsigned int                   cycle,
-                             const DoFHandler<dim> &              dof_handler,
-                             const FiniteElementSpace<dim> &      fe_space,
-                             const MaterialLibrary &              materials,
+                             const DoFHandler<dim>               &dof_handler,
+                             const FiniteElementSpace<dim>       &fe_space,
+                             const MaterialLibrary               &materials,
                              const PlaneState                     plane_state,
-                             const GriffithFailure &              griffith,
+                             const GriffithFailure               &griffith,
                              const TrilinosWrappers::MPI::Vector &solution)
   {
     if (!enabled)
@@ -60,7 +66,7 @@ namespace lithostress
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(solution, postprocessor);
 
-    const auto &  tria = dof_handler.get_triangulation();
+    const auto   &tria = dof_handler.get_triangulation();
     Vector<float> material_id(tria.n_active_cells());
     Vector<float> rank(tria.n_active_cells());
     unsigned int  index = 0;

@@ -11,8 +11,8 @@ namespace lithostress
                               const unsigned long long cells,
                               const unsigned long long dofs)
   {
-    rows.push_back(Row{cycle, cells, dofs, std::vector<double>(columns.size(),
-                                                     std::nan(""))});
+    rows.push_back(Row{
+      cycle, cells, dofs, std::vector<double>(columns.size(), std::nan(""))});
   }
 
   void
@@ -104,8 +104,8 @@ namespace lithostress
                   out << std::setw(8) << std::fixed << std::setprecision(2)
                       << d;
                 else
-                  out << std::setw(8) << std::scientific
-                      << std::setprecision(1) << d;
+                  out << std::setw(8) << std::scientific << std::setprecision(1)
+                      << d;
               }
             out << '\n';
           }

@@ -7,14 +7,14 @@ namespace lithostress
 {
   template <int dim>
   ErrorNorms
-  compute_error_norms(const DoFHandler<dim> &               dof_handler,
-                      const FiniteElementSpace<dim> &      fe_space,
-                      const MaterialLibrary &              materials,
+  compute_error_norms(const DoFHandler<dim>               &dof_handler,
+                      const FiniteElementSpace<dim>       &fe_space,
+                      const MaterialLibrary               &materials,
                       const PlaneState                     plane_state,
                       const TrilinosWrappers::MPI::Vector &solution,
-                      const ReferenceSolution<dim> &       reference)
+                      const ReferenceSolution<dim>        &reference)
   {
-    hp::FEValues<dim> hp_fe_values(fe_space.mapping_collection(),
+    hp::FEValues<dim>           hp_fe_values(fe_space.mapping_collection(),
                                    fe_space.fe_collection(),
                                    fe_space.cell_quadrature(3),
                                    update_values | update_gradients |
@@ -35,15 +35,15 @@ namespace lithostress
           grad_h.resize(n_q);
           fe_values[u].get_function_values(solution, u_h);
           fe_values[u].get_function_gradients(solution, grad_h);
-          const ElasticModuli<dim> moduli(materials(cell->material_id()),
+          const ElasticModuli<dim>      moduli(materials(cell->material_id()),
                                           plane_state);
           const SymmetricTensor<4, dim> S = moduli.compliance();
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const Point<dim> &            p        = fe_values.quadrature_point(q);
-              const double                  JxW      = fe_values.JxW(q);
-              const Tensor<1, dim>          u_exact  = reference.displacement(p);
-              const SymmetricTensor<2, dim> s_exact  = reference.stress(p);
+              const Point<dim>             &p   = fe_values.quadrature_point(q);
+              const double                  JxW = fe_values.JxW(q);
+              const Tensor<1, dim>          u_exact = reference.displacement(p);
+              const SymmetricTensor<2, dim> s_exact = reference.stress(p);
               const SymmetricTensor<2, dim> strain_h = symmetrize(grad_h[q]);
               const SymmetricTensor<2, dim> s_h      = moduli.stress(strain_h);
               const SymmetricTensor<2, dim> ds       = s_h - s_exact;

@@ -10,16 +10,16 @@ namespace lithostress
 {
   template <int dim>
   std::vector<PointValue<dim>>
-  evaluate_at_points(const DoFHandler<dim> &               dof_handler,
-                     const FiniteElementSpace<dim> &      fe_space,
-                     const MaterialLibrary &              materials,
+  evaluate_at_points(const DoFHandler<dim>               &dof_handler,
+                     const FiniteElementSpace<dim>       &fe_space,
+                     const MaterialLibrary               &materials,
                      const PlaneState                     plane_state,
                      const TrilinosWrappers::MPI::Vector &solution,
-                     const std::vector<Point<dim>> &      points)
+                     const std::vector<Point<dim>>       &points)
   {
     const unsigned int  n_values = dim + dim * dim + 1 + 1;
     std::vector<double> local(points.size() * n_values, 0.0);
-    const MPI_Comm comm = dof_handler.get_communicator();
+    const MPI_Comm      comm = dof_handler.get_communicator();
     for (unsigned int k = 0; k < points.size(); ++k)
       {
         // The first owned cell (in CellId order) that contains the point;
@@ -31,19 +31,19 @@ namespace lithostress
         for (const auto &c : dof_handler.active_cell_iterators())
           if (c->is_locally_owned())
             {
-              const auto box = c->bounding_box();
+              const auto   box    = c->bounding_box();
               const double margin = 0.1 * c->diameter();
               bool         near   = true;
               for (unsigned int d = 0; d < dim; ++d)
-                near = near &&
-                       points[k][d] >= box.lower_bound(d) - margin &&
+                near = near && points[k][d] >= box.lower_bound(d) - margin &&
                        points[k][d] <= box.upper_bound(d) + margin;
               if (!near)
                 continue;
               try
                 {
-                  unit = fe_space.mapping().transform_real_to_unit_cell(
-                    c, points[k]);
+                  unit =
+                    fe_space.mapping().transform_real_to_unit_cell(c,
+                                                                   points[k]);
                 }
               catch (const typename Mapping<dim>::ExcTransformationFailed &)
                 {
@@ -61,19 +61,19 @@ namespace lithostress
         int winner = -1;
         for (unsigned int r = 0; r < candidates.size(); ++r)
           if (!candidates[r].empty() &&
-              (winner < 0 || CellId(candidates[r]) < CellId(candidates[winner])))
+              (winner < 0 ||
+               CellId(candidates[r]) < CellId(candidates[winner])))
             winner = r;
         if (winner < 0)
-          throw InputError("the point (" + std::to_string(points[k][0]) +
-                           ", " + std::to_string(points[k][1]) +
+          throw InputError("the point (" + std::to_string(points[k][0]) + ", " +
+                           std::to_string(points[k][1]) +
                            ") [m] is outside the mesh");
         if (static_cast<unsigned int>(winner) !=
             Utilities::MPI::this_mpi_process(comm))
           continue;
-        const auto &             fe = cell->get_fe();
-        const Quadrature<dim>    q(GeometryInfo<dim>::project_to_unit_cell(
-          unit));
-        FEValues<dim>            fe_values(fe_space.mapping(),
+        const auto           &fe = cell->get_fe();
+        const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(unit));
+        FEValues<dim>         fe_values(fe_space.mapping(),
                                 fe,
                                 q,
                                 update_values | update_gradients);
@@ -84,11 +84,11 @@ namespace lithostress
         std::vector<Tensor<2, dim>> gradient(1);
         fe_values[u].get_function_values(solution, value);
         fe_values[u].get_function_gradients(solution, gradient);
-        const ElasticModuli<dim> moduli(materials(cell->material_id()),
+        const ElasticModuli<dim>      moduli(materials(cell->material_id()),
                                         plane_state);
         const SymmetricTensor<2, dim> strain = symmetrize(gradient[0]);
         const SymmetricTensor<2, dim> stress = moduli.stress(strain);
-        double *v = &local[k * n_values];
+        double                       *v      = &local[k * n_values];
         for (unsigned int d = 0; d < dim; ++d)
           v[d] = value[0][d];
         for (unsigned int a = 0; a < dim; ++a)
@@ -105,7 +105,7 @@ namespace lithostress
       {
         const double *v     = &global[k * n_values];
         const double  count = v[dim + dim * dim + 1];
-        result[k].point = points[k];
+        result[k].point     = points[k];
         for (unsigned int d = 0; d < dim; ++d)
           result[k].displacement[d] = v[d] / count;
         for (unsigned int a = 0; a < dim; ++a)

@@ -5,15 +5,17 @@
 namespace lithostress
 {
   template <int dim>
-  StressPostprocessor<dim>::StressPostprocessor(const MaterialLibrary &materials,
-                                                const PlaneState plane_state,
-                                                const unsigned int n_fields,
-                                                const GriffithFailure &griffith)
-    : materials(materials)
-    , plane_state(plane_state)
-    , n_fields(n_fields)
-    , griffith(griffith)
-  {}
+  StressPostprocessor<dim>::StressPostprocessor(
+    const MaterialLibrary &materials,
+    const PlaneState       plane_state,
+    const unsigned int     n_fields,
+    const GriffithFailure &griffith)
+      : materials(materials)
+      , plane_state(plane_state)
+      , n_fields(n_fields)
+      , griffith(griffith)
+  {
+  }
 
   template <int dim>
   std::vector<std::string>
@@ -65,10 +67,10 @@ namespace lithostress
   void
   StressPostprocessor<dim>::evaluate_vector_field(
     const DataPostprocessorInputs::Vector<dim> &inputs,
-    std::vector<Vector<double>> &               computed) const
+    std::vector<Vector<double>>                &computed) const
   {
     const auto               cell     = inputs.template get_cell<dim>();
-    const Material &         material = materials(cell->material_id());
+    const Material          &material = materials(cell->material_id());
     const ElasticModuli<dim> moduli(material, plane_state);
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
@@ -87,9 +89,9 @@ namespace lithostress
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
             computed[q][dim + a * dim + b] = stress[a][b];
-        const double sigma_zz = moduli.sigma_zz(strain);
-        unsigned int k        = dim + dim * dim;
-        computed[q][k++]      = sigma_zz;
+        const double sigma_zz     = moduli.sigma_zz(strain);
+        unsigned int k            = dim + dim * dim;
+        computed[q][k++]          = sigma_zz;
         const PrincipalStresses p = principal_stresses(stress);
         computed[q][k++]          = p.sigma_1;
         computed[q][k++]          = p.sigma_2;
@@ -113,9 +115,8 @@ namespace lithostress
   principal_stresses(const SymmetricTensor<2, 2> &s)
   {
     const double centre = 0.5 * (s[0][0] + s[1][1]);
-    const double radius =
-      std::sqrt(0.25 * (s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) +
-                s[0][1] * s[0][1]);
+    const double radius = std::sqrt(
+      0.25 * (s[0][0] - s[1][1]) * (s[0][0] - s[1][1]) + s[0][1] * s[0][1]);
     PrincipalStresses p;
     p.sigma_1 = centre + radius;
     p.sigma_2 = centre - radius;

@@ -14,16 +14,16 @@ namespace lithostress
 {
   template <int dim>
   std::vector<std::array<double, 1 + 2 * dim>>
-  surface_profile(const DoFHandler<dim> &               dof_handler,
-                  const FiniteElementSpace<dim> &      fe_space,
+  surface_profile(const DoFHandler<dim>               &dof_handler,
+                  const FiniteElementSpace<dim>       &fe_space,
                   const TrilinosWrappers::MPI::Vector &solution,
                   const types::boundary_id             boundary)
   {
     // Points (x, y) with their displacement, from every owned face on the
     // part; the displacement is continuous, so duplicates agree.
-    const FE_Q<dim>       scalar(fe_space.degree());
+    const FE_Q<dim>           scalar(fe_space.degree());
     const Quadrature<dim - 1> points(scalar.get_unit_face_support_points());
-    std::vector<double>   local;
+    std::vector<double>       local;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
@@ -78,15 +78,14 @@ namespace lithostress
   template <int dim>
   void
   write_surface_profile(
-    const std::string &                                 filename,
+    const std::string                                  &filename,
     const std::vector<std::array<double, 1 + 2 * dim>> &profile)
   {
     std::ofstream out(filename);
     out << "x,y,u_x,u_y\n"
         << std::setprecision(std::numeric_limits<double>::max_digits10);
     for (const auto &row : profile)
-      out << row[0] << ',' << row[1] << ',' << row[2] << ',' << row[3]
-          << '\n';
+      out << row[0] << ',' << row[1] << ',' << row[2] << ',' << row[3] << '\n';
   }
 
   template std::vector<std::array<double, 5>>

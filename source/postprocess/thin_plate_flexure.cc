@@ -13,25 +13,34 @@ namespace lithostress
   ThinPlateFlexure::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Thin plate comparison");
-    prm.declare_entry("Enabled", "false", Patterns::Bool(),
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
                       "Compare the surface profile with a thin elastic plate "
                       "on a fluid foundation (needs Output/Surface profile "
                       "boundary); uses the first material's E and nu.");
-    prm.declare_entry("Load position", "500", Patterns::Double(),
+    prm.declare_entry("Load position",
+                      "500",
+                      Patterns::Double(),
                       "x of the line load [length unit].");
-    prm.declare_entry("Line load", "2e12", Patterns::Double(0),
+    prm.declare_entry("Line load",
+                      "2e12",
+                      Patterns::Double(0),
                       "Magnitude V of the downward line load [N/m].");
-    prm.declare_entry("Plate thickness", "20", Patterns::Double(0),
+    prm.declare_entry("Plate thickness",
+                      "20",
+                      Patterns::Double(0),
                       "Elastic thickness h [length unit].");
-    prm.declare_entry("Fluid density", "2900", Patterns::Double(0),
+    prm.declare_entry("Fluid density",
+                      "2900",
+                      Patterns::Double(0),
                       "Density of the fluid foundation [kg/m^3].");
-    prm.declare_entry("Gravity", "9.81", Patterns::Double(0),
-                      "g [m/s^2].");
+    prm.declare_entry("Gravity", "9.81", Patterns::Double(0), "g [m/s^2].");
     prm.leave_subsection();
   }
 
   void
-  ThinPlateFlexure::parse_parameters(ParameterHandler &     prm,
+  ThinPlateFlexure::parse_parameters(ParameterHandler      &prm,
                                      const MaterialLibrary &materials,
                                      const double           scale)
   {
@@ -65,18 +74,17 @@ namespace lithostress
 
   void
   ThinPlateFlexure::report(const std::vector<std::array<double, 5>> &profile,
-                           RunLog &log) const
+                           RunLog                                   &log) const
   {
     std::ostringstream out;
     out << std::fixed << std::setprecision(2);
     out << "\nThin-plate comparison (SPEC §4): D = " << std::scientific
         << std::setprecision(4) << rigidity << " N m, alpha = " << std::fixed
-        << std::setprecision(2) << alpha / 1e3 << " km, w0 = " << w0
-        << " m\n";
+        << std::setprecision(2) << alpha / 1e3 << " km, w0 = " << w0 << " m\n";
     out << "  forebulge       distance from load [km]   height [m]\n";
-    out << "  thin plate      " << std::setw(10)
-        << numbers::PI * alpha / 1e3 << "           " << std::setw(10)
-        << w0 * std::exp(-numbers::PI) << '\n';
+    out << "  thin plate      " << std::setw(10) << numbers::PI * alpha / 1e3
+        << "           " << std::setw(10) << w0 * std::exp(-numbers::PI)
+        << '\n';
     for (const int side : {-1, 1})
       {
         double best_x = 0, best_u = -1e300;
@@ -87,11 +95,11 @@ namespace lithostress
               best_u = row[3], best_x = d;
           }
         out << "  FE " << (side < 0 ? "left " : "right") << "        "
-            << std::setw(10) << best_x / 1e3 << "           "
-            << std::setw(10) << best_u << "  ("
-            << std::setprecision(1)
+            << std::setw(10) << best_x / 1e3 << "           " << std::setw(10)
+            << best_u << "  (" << std::setprecision(1)
             << 100 * (best_u / (w0 * std::exp(-numbers::PI)) - 1)
-            << " % in height)\n" << std::setprecision(2);
+            << " % in height)\n"
+            << std::setprecision(2);
       }
     out << "  deflection away from the load (positive down):\n"
         << "    distance [km]   thin plate [m]   FE [m]\n";
@@ -102,8 +110,8 @@ namespace lithostress
         for (unsigned int k = 0; k + 1 < profile.size(); ++k)
           if (profile[k][0] <= x && profile[k + 1][0] >= x)
             {
-              const double t = (x - profile[k][0]) /
-                               (profile[k + 1][0] - profile[k][0]);
+              const double t =
+                (x - profile[k][0]) / (profile[k + 1][0] - profile[k][0]);
               const double u =
                 -((1 - t) * profile[k][3] + t * profile[k + 1][3]);
               out << "    " << std::setw(12) << d * alpha / 1e3 << "   "

@@ -14,28 +14,34 @@ namespace lithostress
   LithostaticColumn<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Lithostatic column");
-    prm.declare_entry("Top", "0", Patterns::Double(),
+    prm.declare_entry("Top",
+                      "0",
+                      Patterns::Double(),
                       "Height y of the free top surface [length unit].");
-    prm.declare_entry("Base", "-10", Patterns::Double(),
+    prm.declare_entry("Base",
+                      "-10",
+                      Patterns::Double(),
                       "Height y of the base, fixed vertically [length unit].");
-    prm.declare_entry("Gravity", "9.81", Patterns::Double(0),
+    prm.declare_entry("Gravity",
+                      "9.81",
+                      Patterns::Double(0),
                       "Gravitational acceleration g [m/s^2].");
     prm.leave_subsection();
   }
 
   template <int dim>
   void
-  LithostaticColumn<dim>::parse_parameters(ParameterHandler &     prm,
+  LithostaticColumn<dim>::parse_parameters(ParameterHandler      &prm,
                                            const MaterialLibrary &materials,
                                            const PlaneState       state,
                                            const double           scale)
   {
     prm.enter_subsection("Lithostatic column");
-    top             = prm.get_double("Top") * scale;
-    base            = prm.get_double("Base") * scale;
-    const double g  = prm.get_double("Gravity");
+    top            = prm.get_double("Top") * scale;
+    base           = prm.get_double("Base") * scale;
+    const double g = prm.get_double("Gravity");
     prm.leave_subsection();
-    const Material &          m = materials.materials().front();
+    const Material          &m = materials.materials().front();
     const ElasticModuli<dim> moduli(m, state);
     rho_g         = m.density * g;
     p_modulus     = moduli.lambda_in_plane + 2 * moduli.mu;
@@ -68,18 +74,24 @@ namespace lithostress
   TimoshenkoCantilever<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Cantilever");
-    prm.declare_entry("End load", "5e4", Patterns::Double(),
+    prm.declare_entry("End load",
+                      "5e4",
+                      Patterns::Double(),
                       "Downward end load P per unit thickness [N/m].");
-    prm.declare_entry("Length", "10", Patterns::Double(),
+    prm.declare_entry("Length",
+                      "10",
+                      Patterns::Double(),
                       "Beam length l [length unit].");
-    prm.declare_entry("Depth", "2.5", Patterns::Double(),
+    prm.declare_entry("Depth",
+                      "2.5",
+                      Patterns::Double(),
                       "Beam depth 2c [length unit].");
     prm.leave_subsection();
   }
 
   template <int dim>
   void
-  TimoshenkoCantilever<dim>::parse_parameters(ParameterHandler &     prm,
+  TimoshenkoCantilever<dim>::parse_parameters(ParameterHandler      &prm,
                                               const MaterialLibrary &materials,
                                               const PlaneState       state,
                                               const double           scale)
@@ -132,13 +144,21 @@ namespace lithostress
   LameCylinder<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Lame cylinder");
-    prm.declare_entry("Internal pressure", "1e3", Patterns::Double(),
+    prm.declare_entry("Internal pressure",
+                      "1e3",
+                      Patterns::Double(),
                       "Pressure p on r = a [Pa].");
-    prm.declare_entry("Inner radius", "2", Patterns::Double(),
+    prm.declare_entry("Inner radius",
+                      "2",
+                      Patterns::Double(),
                       "a [length unit].");
-    prm.declare_entry("Outer radius", "4", Patterns::Double(),
+    prm.declare_entry("Outer radius",
+                      "4",
+                      Patterns::Double(),
                       "b [length unit].");
-    prm.declare_entry("Shell thickness", "0", Patterns::Double(0),
+    prm.declare_entry("Shell thickness",
+                      "0",
+                      Patterns::Double(0),
                       "t of the bonded outer shell (material id 1) "
                       "[length unit].");
     prm.leave_subsection();
@@ -146,7 +166,7 @@ namespace lithostress
 
   template <int dim>
   void
-  LameCylinder<dim>::parse_parameters(ParameterHandler &     prm,
+  LameCylinder<dim>::parse_parameters(ParameterHandler      &prm,
                                       const MaterialLibrary &materials,
                                       const PlaneState       state,
                                       const double           scale)
@@ -231,10 +251,10 @@ namespace lithostress
   {
     const double       r     = std::hypot(p[0], p[1]);
     const unsigned int layer = (t > 0 && r > b) ? 1 : 0;
-    const double       srr =
-      2 * (lambda[layer] + mu[layer]) * A[layer] - 2 * mu[layer] * B[layer] / (r * r);
-    const double stt =
-      2 * (lambda[layer] + mu[layer]) * A[layer] + 2 * mu[layer] * B[layer] / (r * r);
+    const double       srr   = 2 * (lambda[layer] + mu[layer]) * A[layer] -
+                       2 * mu[layer] * B[layer] / (r * r);
+    const double stt = 2 * (lambda[layer] + mu[layer]) * A[layer] +
+                       2 * mu[layer] * B[layer] / (r * r);
     const double            c = p[0] / r, s = p[1] / r;
     SymmetricTensor<2, dim> sigma;
     sigma[0][0] = srr * c * c + stt * s * s;
@@ -249,7 +269,9 @@ namespace lithostress
   WilliamsCornerSolution<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Williams corner");
-    prm.declare_entry("Amplitude", "1e6", Patterns::Double(),
+    prm.declare_entry("Amplitude",
+                      "1e6",
+                      Patterns::Double(),
                       "Stress intensity A of the mode-I eigen-solution "
                       "[Pa m^(1-lambda)].");
     prm.leave_subsection();
@@ -258,7 +280,7 @@ namespace lithostress
   template <int dim>
   void
   WilliamsCornerSolution<dim>::parse_parameters(
-    ParameterHandler &     prm,
+    ParameterHandler      &prm,
     const MaterialLibrary &materials,
     const PlaneState       state,
     const double)
@@ -269,7 +291,7 @@ namespace lithostress
     omega = 3 * numbers::PI / 4;
     // Smallest positive root of sin(2λω) + λ sin(2ω) = 0 in (0.5, 0.6).
     double lo = 0.5, hi = 0.6;
-    auto   f  = [&](const double l) {
+    auto   f = [&](const double l) {
       return std::sin(2 * l * omega) + l * std::sin(2 * omega);
     };
     for (unsigned int i = 0; i < 200; ++i)
@@ -284,16 +306,16 @@ namespace lithostress
     Q      = -std::cos((lambda - 1) * omega) / std::cos((lambda + 1) * omega);
     const Material &m = materials.materials().front();
     G                 = m.shear_modulus();
-    kappa             = (state == PlaneState::plane_strain) ?
-                          3 - 4 * m.poissons_ratio :
-                          (3 - m.poissons_ratio) / (1 + m.poissons_ratio);
+    kappa             = (state == PlaneState::plane_strain)
+                          ? 3 - 4 * m.poissons_ratio
+                          : (3 - m.poissons_ratio) / (1 + m.poissons_ratio);
   }
 
   template <int dim>
   void
   WilliamsCornerSolution<dim>::local_coordinates(const Point<dim> &p,
-                                                 double &          r,
-                                                 double &          theta) const
+                                                 double           &r,
+                                                 double           &theta) const
   {
     r = std::hypot(p[0], p[1]);
     // Angle from the bisector of the material wedge (direction 225°).
@@ -317,7 +339,8 @@ namespace lithostress
     const double uy = f * ((kappa + Q * (l + 1)) * std::sin(l * th) +
                            l * std::sin((l - 2) * th));
     // Rotate from the bisector frame (e1 at 225°) to x, y.
-    const double   c = std::cos(1.25 * numbers::PI), s = std::sin(1.25 * numbers::PI);
+    const double c = std::cos(1.25 * numbers::PI),
+                 s = std::sin(1.25 * numbers::PI);
     Tensor<1, dim> u;
     u[0] = c * ux - s * uy;
     u[1] = s * ux + c * uy;
@@ -330,17 +353,18 @@ namespace lithostress
   {
     double r, th;
     local_coordinates(p, r, th);
-    const double l = lambda;
-    const double f = amplitude * l * std::pow(r, l - 1);
-    const double sx =
-      f * ((2 - Q * (l + 1)) * std::cos((l - 1) * th) - (l - 1) * std::cos((l - 3) * th));
-    const double sy =
-      f * ((2 + Q * (l + 1)) * std::cos((l - 1) * th) + (l - 1) * std::cos((l - 3) * th));
-    const double txy =
-      f * ((l - 1) * std::sin((l - 3) * th) + Q * (l + 1) * std::sin((l - 1) * th));
+    const double   l   = lambda;
+    const double   f   = amplitude * l * std::pow(r, l - 1);
+    const double   sx  = f * ((2 - Q * (l + 1)) * std::cos((l - 1) * th) -
+                           (l - 1) * std::cos((l - 3) * th));
+    const double   sy  = f * ((2 + Q * (l + 1)) * std::cos((l - 1) * th) +
+                           (l - 1) * std::cos((l - 3) * th));
+    const double   txy = f * ((l - 1) * std::sin((l - 3) * th) +
+                            Q * (l + 1) * std::sin((l - 1) * th));
     Tensor<2, dim> local, R;
     local[0][0] = sx, local[1][1] = sy, local[0][1] = local[1][0] = txy;
-    const double c = std::cos(1.25 * numbers::PI), s = std::sin(1.25 * numbers::PI);
+    const double c = std::cos(1.25 * numbers::PI),
+                 s = std::sin(1.25 * numbers::PI);
     R[0][0] = c, R[0][1] = -s, R[1][0] = s, R[1][1] = c;
     return symmetrize(Tensor<2, dim>(R * local * transpose(R)));
   }
@@ -364,12 +388,12 @@ namespace lithostress
 
   template <int dim>
   std::unique_ptr<ReferenceSolution<dim>>
-  ReferenceSolutionSelector<dim>::create(ParameterHandler &     prm,
+  ReferenceSolutionSelector<dim>::create(ParameterHandler      &prm,
                                          const MaterialLibrary &materials,
                                          const PlaneState       state,
                                          const double           scale)
   {
-    const std::string                       name = prm.get("Reference solution");
+    const std::string name = prm.get("Reference solution");
     std::unique_ptr<ReferenceSolution<dim>> solution;
     if (name == "lithostatic column")
       solution = std::make_unique<LithostaticColumn<dim>>();
@@ -389,13 +413,14 @@ namespace lithostress
   ReferenceDisplacement<dim>::ReferenceDisplacement(
     const ReferenceSolution<dim> &solution,
     const unsigned int            n_fields)
-    : Function<dim>(dim * n_fields)
-    , solution(solution)
-  {}
+      : Function<dim>(dim * n_fields)
+      , solution(solution)
+  {
+  }
 
   template <int dim>
   double
-  ReferenceDisplacement<dim>::value(const Point<dim> & p,
+  ReferenceDisplacement<dim>::value(const Point<dim>  &p,
                                     const unsigned int component) const
   {
     return solution.displacement(p)[component % dim];
@@ -404,7 +429,7 @@ namespace lithostress
   template <int dim>
   void
   ReferenceDisplacement<dim>::vector_value(const Point<dim> &p,
-                                           Vector<double> &  values) const
+                                           Vector<double>   &values) const
   {
     const Tensor<1, dim> u = solution.displacement(p);
     for (unsigned int c = 0; c < values.size(); ++c)

@@ -19,29 +19,44 @@ namespace lithostress
   MeshRefinement<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh refinement");
-    prm.declare_entry("Initial global refinement", "0", Patterns::Integer(0, 20),
+    prm.declare_entry("Initial global refinement",
+                      "0",
+                      Patterns::Integer(0, 20),
                       "Global refinements of the coarse mesh before the first "
                       "cycle.");
-    prm.declare_entry("Number of cycles", "1", Patterns::Integer(1, 100),
+    prm.declare_entry("Number of cycles",
+                      "1",
+                      Patterns::Integer(1, 100),
                       "Solve-refine cycles (rows of the convergence table).");
-    prm.declare_entry("Strategy", "global", Patterns::Selection("global|adaptive"),
+    prm.declare_entry("Strategy",
+                      "global",
+                      Patterns::Selection("global|adaptive"),
                       "Refine all cells, or by an error indicator.");
-    prm.declare_entry("Indicator", "Kelly",
+    prm.declare_entry("Indicator",
+                      "Kelly",
                       Patterns::Selection("Kelly|stress recovery"),
                       "Adaptive indicator: Kelly (jump of the displacement "
                       "gradient) or stress recovery (Zienkiewicz-Zhu).");
-    prm.declare_entry("Marking", "fraction of error",
-                      Patterns::Selection("fraction of error|fraction of cells"),
+    prm.declare_entry("Marking",
+                      "fraction of error",
+                      Patterns::Selection(
+                        "fraction of error|fraction of cells"),
                       "Refine the cells that carry the `Refine fraction` of "
                       "the squared error (Doerfler marking, optimal rates at "
                       "singularities), or that fraction of the cells.");
-    prm.declare_entry("Refine fraction", "0.3", Patterns::Anything(),
+    prm.declare_entry("Refine fraction",
+                      "0.3",
+                      Patterns::Anything(),
                       "Fraction of the error (or cells) refined per cycle, "
                       "in [0, 1].");
-    prm.declare_entry("Coarsen fraction", "0.0", Patterns::Anything(),
+    prm.declare_entry("Coarsen fraction",
+                      "0.0",
+                      Patterns::Anything(),
                       "Fraction of the error (or cells) coarsened per cycle, "
                       "in [0, 1].");
-    prm.declare_entry("Maximum level", "20", Patterns::Integer(0, 30),
+    prm.declare_entry("Maximum level",
+                      "20",
+                      Patterns::Integer(0, 30),
                       "No cell is refined beyond this level.");
     prm.leave_subsection();
   }
@@ -53,14 +68,14 @@ namespace lithostress
     prm.enter_subsection("Mesh refinement");
     initial_global_refinement = prm.get_integer("Initial global refinement");
     n_cycles                  = prm.get_integer("Number of cycles");
-    strategy  = prm.get("Strategy") == "global" ? Strategy::global :
-                                                  Strategy::adaptive;
-    indicator = prm.get("Indicator") == "Kelly" ? Indicator::kelly :
-                                                  Indicator::stress_recovery;
-    max_level = prm.get_integer("Maximum level");
-    marking   = prm.get("Marking") == "fraction of error" ?
-                  Marking::fraction_of_error :
-                  Marking::fraction_of_cells;
+    strategy =
+      prm.get("Strategy") == "global" ? Strategy::global : Strategy::adaptive;
+    indicator     = prm.get("Indicator") == "Kelly" ? Indicator::kelly
+                                                    : Indicator::stress_recovery;
+    max_level     = prm.get_integer("Maximum level");
+    marking       = prm.get("Marking") == "fraction of error"
+                      ? Marking::fraction_of_error
+                      : Marking::fraction_of_cells;
     auto fraction = [&](const std::string &entry) {
       const std::string text = prm.get(entry);
       double            value;
@@ -92,37 +107,37 @@ namespace lithostress
   template <int dim>
   Vector<float>
   MeshRefinement<dim>::indicators(
-    const DoFHandler<dim> &               dof_handler,
-    const FiniteElementSpace<dim> &      fe_space,
-    const MaterialLibrary &              materials,
+    const DoFHandler<dim>               &dof_handler,
+    const FiniteElementSpace<dim>       &fe_space,
+    const MaterialLibrary               &materials,
     const PlaneState                     plane_state,
     const TrilinosWrappers::MPI::Vector &solution) const
   {
-    const auto &  tria = dof_handler.get_triangulation();
+    const auto   &tria = dof_handler.get_triangulation();
     Vector<float> eta(tria.n_active_cells());
     if (indicator == Indicator::kelly)
       {
-        KellyErrorEstimator<dim>::estimate(fe_space.mapping(),
-                                           dof_handler,
-                                           fe_space.face_quadrature(),
-                                           std::map<types::boundary_id,
-                                                    const Function<dim> *>(),
-                                           solution,
-                                           eta,
-                                           ComponentMask(),
-                                           nullptr,
-                                           numbers::invalid_unsigned_int,
-                                           tria.locally_owned_subdomain());
+        KellyErrorEstimator<dim>::estimate(
+          fe_space.mapping(),
+          dof_handler,
+          fe_space.face_quadrature(),
+          std::map<types::boundary_id, const Function<dim> *>(),
+          solution,
+          eta,
+          ComponentMask(),
+          nullptr,
+          numbers::invalid_unsigned_int,
+          tria.locally_owned_subdomain());
         return eta;
       }
 
     // Zienkiewicz–Zhu: average the stress at the nodes of a continuous
     // Q_p field (each cell contributes its stress at the node), then
     // η_K = ‖σ_h − σ*‖_{L2(K)}.
-    const MPI_Comm           comm = dof_handler.get_communicator();
-    const unsigned int       n_stress = dim * (dim + 1) / 2;
-    const FESystem<dim>      stress_fe(FE_Q<dim>(fe_space.degree()), n_stress);
-    DoFHandler<dim>          stress_dofs(tria);
+    const MPI_Comm      comm     = dof_handler.get_communicator();
+    const unsigned int  n_stress = dim * (dim + 1) / 2;
+    const FESystem<dim> stress_fe(FE_Q<dim>(fe_space.degree()), n_stress);
+    DoFHandler<dim>     stress_dofs(tria);
     stress_dofs.distribute_dofs(stress_fe);
     const IndexSet owned = stress_dofs.locally_owned_dofs();
     IndexSet       relevant;
@@ -131,22 +146,25 @@ namespace lithostress
     sum.reinit(owned, relevant, comm, true);
     weight.reinit(owned, relevant, comm, true);
 
-    const Quadrature<dim> nodes(stress_fe.base_element(0).get_unit_support_points());
-    hp::QCollection<dim>  node_q;
+    const Quadrature<dim> nodes(
+      stress_fe.base_element(0).get_unit_support_points());
+    hp::QCollection<dim> node_q;
     for (unsigned int f = 0; f < fe_space.fe_collection().size(); ++f)
       node_q.push_back(nodes);
     hp::FEValues<dim> at_nodes(fe_space.mapping_collection(),
                                fe_space.fe_collection(),
                                node_q,
                                update_gradients);
-    auto stress_component = [](const SymmetricTensor<2, dim> &s,
+    auto              stress_component = [](const SymmetricTensor<2, dim> &s,
                                const unsigned int             c) {
       if (c < dim)
         return s[c][c];
-      return (dim == 2) ? s[0][1] : (c == 3 ? s[0][1] : (c == 4 ? s[1][2] : s[0][2]));
+      return (dim == 2) ? s[0][1]
+                                     : (c == 3 ? s[0][1] : (c == 4 ? s[1][2] : s[0][2]));
     };
     std::vector<Tensor<2, dim>>          grads;
-    std::vector<types::global_dof_index> stress_indices(stress_fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> stress_indices(
+      stress_fe.n_dofs_per_cell());
     auto stress_cell = stress_dofs.begin_active();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -185,15 +203,18 @@ namespace lithostress
     TrilinosWrappers::MPI::Vector recovered(owned, relevant, comm);
     recovered = average;
 
-    hp::FEValues<dim> hp_fe_values(fe_space.mapping_collection(),
+    hp::FEValues<dim>           hp_fe_values(fe_space.mapping_collection(),
                                    fe_space.fe_collection(),
                                    fe_space.cell_quadrature(),
                                    update_gradients | update_JxW_values);
-    const QGauss<dim>  quadrature(fe_space.degree() + 1);
-    FEValues<dim>      stress_values(fe_space.mapping(), stress_fe, quadrature,
+    const QGauss<dim>           quadrature(fe_space.degree() + 1);
+    FEValues<dim>               stress_values(fe_space.mapping(),
+                                stress_fe,
+                                quadrature,
                                 update_values);
-    std::vector<Vector<double>> s_star(quadrature.size(), Vector<double>(n_stress));
-    stress_cell = stress_dofs.begin_active();
+    std::vector<Vector<double>> s_star(quadrature.size(),
+                                       Vector<double>(n_stress));
+    stress_cell        = stress_dofs.begin_active();
     unsigned int index = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -209,7 +230,7 @@ namespace lithostress
             stress_values.get_function_values(recovered, s_star);
             const ElasticModuli<dim> moduli(materials(cell->material_id()),
                                             plane_state);
-            double e2 = 0;
+            double                   e2 = 0;
             for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
               {
                 const SymmetricTensor<2, dim> s =
@@ -232,13 +253,13 @@ namespace lithostress
   void
   MeshRefinement<dim>::mark_fraction_of_error(
     parallel::distributed::Triangulation<dim> &tria,
-    const Vector<float> &                      eta) const
+    const Vector<float>                       &eta) const
   {
     // Dörfler marking by bisection on the threshold: refine the cells with
     // η_K > t where t is the largest value with Σ_{η_K > t} η_K² ≥ θ Σ η_K²;
     // coarsen the cells with η_K < s, s the largest value with
     // Σ_{η_K < s} η_K² ≤ θ_c Σ η_K². Only sums are communicated.
-    const MPI_Comm comm = tria.get_communicator();
+    const MPI_Comm comm  = tria.get_communicator();
     double         total = 0, largest = 0;
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -306,12 +327,13 @@ namespace lithostress
 
   template <int dim>
   void
-  MeshRefinement<dim>::refine(parallel::distributed::Triangulation<dim> &tria,
-                              const DoFHandler<dim> &         dof_handler,
-                              const FiniteElementSpace<dim> & fe_space,
-                              const MaterialLibrary &         materials,
-                              const PlaneState                plane_state,
-                              const TrilinosWrappers::MPI::Vector &solution) const
+  MeshRefinement<dim>::refine(
+    parallel::distributed::Triangulation<dim> &tria,
+    const DoFHandler<dim>                     &dof_handler,
+    const FiniteElementSpace<dim>             &fe_space,
+    const MaterialLibrary                     &materials,
+    const PlaneState                           plane_state,
+    const TrilinosWrappers::MPI::Vector       &solution) const
   {
     if (strategy == Strategy::global)
       {

@@ -13,14 +13,15 @@ namespace lithostress
 {
   template <int dim>
   AMGSolver<dim>::AMGSolver(const Settings &settings)
-    : settings(settings)
-  {}
+      : settings(settings)
+  {
+  }
 
   template <int dim>
   SolverReport
-  AMGSolver<dim>::solve(const DoFHandler<dim> &         dof_handler,
+  AMGSolver<dim>::solve(const DoFHandler<dim>         &dof_handler,
                         const FiniteElementSpace<dim> &fe_space,
-                        const LinearSystem<dim> &      system,
+                        const LinearSystem<dim>       &system,
                         TrilinosWrappers::MPI::Vector &solution)
   {
     SolverReport report;
@@ -51,8 +52,8 @@ namespace lithostress
     report.setup_time = timer.wall_time();
 
     timer.restart();
-    const double  rhs_norm = system.rhs.l2_norm();
-    SolverControl control(settings.max_iterations,
+    const double                            rhs_norm = system.rhs.l2_norm();
+    SolverControl                           control(settings.max_iterations,
                           settings.relative_tolerance * rhs_norm,
                           false,
                           false);
@@ -83,7 +84,7 @@ namespace lithostress
         // The machine's speed in the operation that bounds CG + AMG, to
         // compare benchmark figures across machines.
         TrilinosWrappers::MPI::Vector y(system.rhs);
-        Timer                         product(dof_handler.get_communicator(), true);
+        Timer product(dof_handler.get_communicator(), true);
         for (unsigned int k = 0; k < 10; ++k)
           system.matrix.vmult(y, system.rhs);
         report.matrix_vector_product_time = product.wall_time() / 10;

@@ -9,14 +9,15 @@ namespace lithostress
 {
   template <int dim>
   DirectSolver<dim>::DirectSolver(const std::string &amesos_solver)
-    : amesos_solver(amesos_solver)
-  {}
+      : amesos_solver(amesos_solver)
+  {
+  }
 
   template <int dim>
   SolverReport
   DirectSolver<dim>::solve(const DoFHandler<dim> &dof_handler,
                            const FiniteElementSpace<dim> &,
-                           const LinearSystem<dim> &      system,
+                           const LinearSystem<dim>       &system,
                            TrilinosWrappers::MPI::Vector &solution)
   {
     SolverReport report;
@@ -24,7 +25,7 @@ namespace lithostress
     Timer         timer(dof_handler.get_communicator(), true);
     SolverControl control(1, 0);
     TrilinosWrappers::SolverDirect::AdditionalData data(false, amesos_solver);
-    TrilinosWrappers::SolverDirect solver(control, data);
+    TrilinosWrappers::SolverDirect                 solver(control, data);
     try
       {
         solver.solve(system.matrix, solution, system.rhs);

@@ -9,25 +9,38 @@ namespace lithostress
   LinearSolverSelector<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    prm.declare_entry("Type", "AMG", Patterns::Selection("AMG|direct"),
+    prm.declare_entry("Type",
+                      "AMG",
+                      Patterns::Selection("AMG|direct"),
                       "CG with algebraic multigrid (all rigid-body modes as "
                       "near-null space), or a sparse direct solver.");
-    prm.declare_entry("Relative tolerance", "1e-10", Patterns::Double(1e-16, 1),
+    prm.declare_entry("Relative tolerance",
+                      "1e-10",
+                      Patterns::Double(1e-16, 1),
                       "CG stops when |r| <= tol |f| (unpreconditioned).");
-    prm.declare_entry("Maximum iterations", "1000", Patterns::Integer(1),
+    prm.declare_entry("Maximum iterations",
+                      "1000",
+                      Patterns::Integer(1),
                       "CG iteration limit; reaching it is an error.");
-    prm.declare_entry("AMG smoother", "Chebyshev",
+    prm.declare_entry("AMG smoother",
+                      "Chebyshev",
                       Patterns::Selection("Chebyshev|symmetric Gauss-Seidel"),
                       "Smoother of the AMG V-cycle.");
-    prm.declare_entry("AMG smoother sweeps", "2", Patterns::Integer(1),
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Patterns::Integer(1),
                       "Smoother sweeps (Chebyshev degree) in the V-cycle.");
-    prm.declare_entry("AMG aggregation threshold", "1e-4",
+    prm.declare_entry("AMG aggregation threshold",
+                      "1e-4",
                       Patterns::Double(0, 1),
                       "ML aggregation threshold (strength of connection).");
-    prm.declare_entry("Time matrix-vector product", "false", Patterns::Bool(),
+    prm.declare_entry("Time matrix-vector product",
+                      "false",
+                      Patterns::Bool(),
                       "Measure one product with the stiffness matrix after "
                       "the solve and report it in statistics.json (bench).");
-    prm.declare_entry("Direct solver", "Amesos_Klu",
+    prm.declare_entry("Direct solver",
+                      "Amesos_Klu",
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps|"
                                           "Amesos_Superludist"),
                       "Trilinos Amesos package used by the direct solver.");
@@ -50,7 +63,7 @@ namespace lithostress
         s.smoother              = prm.get("AMG smoother");
         s.time_matrix_vector_product =
           prm.get_bool("Time matrix-vector product");
-        solver                  = std::make_unique<AMGSolver<dim>>(s);
+        solver = std::make_unique<AMGSolver<dim>>(s);
       }
     else
       solver = std::make_unique<DirectSolver<dim>>(prm.get("Direct solver"));

@@ -9,9 +9,9 @@ namespace lithostress
 {
   template <int dim>
   std::unique_ptr<Epetra_MultiVector>
-  make_rigid_body_modes(const DoFHandler<dim> &         dof_handler,
+  make_rigid_body_modes(const DoFHandler<dim>         &dof_handler,
                         const FiniteElementSpace<dim> &fe_space,
-                        const Epetra_Map &              map)
+                        const Epetra_Map              &map)
   {
     const unsigned int n_rotations = dim * (dim - 1) / 2;
     const unsigned int per_field   = dim + n_rotations;
@@ -52,7 +52,8 @@ namespace lithostress
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(static_cast<typename Triangulation<dim>::cell_iterator>(cell));
+          fe_values.reinit(
+            static_cast<typename Triangulation<dim>::cell_iterator>(cell));
           const auto &fe = cell->get_fe();
           dofs.resize(fe.n_dofs_per_cell());
           cell->get_dof_indices(dofs);
@@ -61,9 +62,9 @@ namespace lithostress
               const int lid = map.LID(static_cast<long long>(dofs[i]));
               if (lid < 0)
                 continue;
-              const auto         ci    = fe.system_to_component_index(i);
-              const unsigned int field = ci.first / dim;
-              const unsigned int d     = ci.first % dim;
+              const auto           ci    = fe.system_to_component_index(i);
+              const unsigned int   field = ci.first / dim;
+              const unsigned int   d     = ci.first % dim;
               const Tensor<1, dim> x =
                 fe_values.quadrature_point(ci.second) - centre;
               const unsigned int first = field * per_field;

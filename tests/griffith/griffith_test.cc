@@ -165,7 +165,7 @@ namespace
    */
   void
   check_state(const GriffithFailure &griffith,
-              const std::string &    name,
+              const std::string     &name,
               const double           sigma_1,
               const double           sigma_2,
               const double           T,

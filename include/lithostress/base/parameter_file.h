@@ -38,10 +38,10 @@ namespace lithostress
      * Throws InputError with the parser's message on any problem.
      */
     static void
-    read(const std::string &             filename,
+    read(const std::string              &filename,
          const std::vector<std::string> &overrides,
-         const Declaration &             declare,
-         ParameterHandler &              prm);
+         const Declaration              &declare,
+         ParameterHandler               &prm);
 
     /**
      * The list of names in entry @p entry of the current subsection of
@@ -49,9 +49,9 @@ namespace lithostress
      * The caller has entered the same subsection path in both handlers.
      */
     static std::vector<std::string>
-    names_from(ParameterHandler *              first_pass,
+    names_from(ParameterHandler               *first_pass,
                const std::vector<std::string> &path,
-               const std::string &             entry,
+               const std::string              &entry,
                const std::vector<std::string> &example);
 
     /**

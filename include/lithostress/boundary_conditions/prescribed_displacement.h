@@ -30,10 +30,10 @@ namespace lithostress
 
     /** Add the constraints at time @p time to @p constraints. */
     void
-    apply(const DoFHandler<dim> &          dof_handler,
-          const FiniteElementSpace<dim> &  fe_space,
-          AffineConstraints<double> &      constraints,
-          const double                     time = 0) const;
+    apply(const DoFHandler<dim>         &dof_handler,
+          const FiniteElementSpace<dim> &fe_space,
+          AffineConstraints<double>     &constraints,
+          const double                   time = 0) const;
 
     /** Whether part @p id has a prescribed component. */
     bool
@@ -42,11 +42,11 @@ namespace lithostress
   private:
     struct Part
     {
-      types::boundary_id                                  id;
+      types::boundary_id                                      id;
       std::array<std::unique_ptr<ParsedExpression<dim>>, dim> component;
-      std::array<bool, dim>                               from_reference;
+      std::array<bool, dim>                                   from_reference;
     };
-    std::vector<Part>              parts;
+    std::vector<Part>             parts;
     const ReferenceSolution<dim> *reference = nullptr;
   };
 } // namespace lithostress

@@ -24,14 +24,14 @@ namespace lithostress
   {
   public:
     ElasticAssembler(const FiniteElementSpace<dim> &fe_space,
-                     const MaterialLibrary &        materials,
+                     const MaterialLibrary         &materials,
                      const PlaneState               plane_state,
-                     const LoadCollection<dim> &    loads);
+                     const LoadCollection<dim>     &loads);
 
     /** Assemble matrix (if @p with_matrix) and right-hand side. */
     void
     assemble(const DoFHandler<dim> &dof_handler,
-             LinearSystem<dim> &    system,
+             LinearSystem<dim>     &system,
              const bool             with_matrix = true) const;
 
     /** The moduli of material @p id in the model's plane state. */
@@ -40,9 +40,9 @@ namespace lithostress
 
   private:
     const FiniteElementSpace<dim> &fe_space;
-    const MaterialLibrary &        materials;
+    const MaterialLibrary         &materials;
     const PlaneState               plane_state;
-    const LoadCollection<dim> &    loads;
+    const LoadCollection<dim>     &loads;
   };
 } // namespace lithostress
 

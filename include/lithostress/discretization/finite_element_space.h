@@ -96,12 +96,12 @@ namespace lithostress
     }
 
   private:
-    unsigned int                      polynomial_degree;
-    unsigned int                      n_displacement_fields;
-    hp::FECollection<dim>             fe;
-    std::unique_ptr<MappingQ<dim>>    mapping_q;
-    hp::MappingCollection<dim>        mappings;
-    std::vector<Point<dim>>           scalar_support_points;
+    unsigned int                   polynomial_degree;
+    unsigned int                   n_displacement_fields;
+    hp::FECollection<dim>          fe;
+    std::unique_ptr<MappingQ<dim>> mapping_q;
+    hp::MappingCollection<dim>     mappings;
+    std::vector<Point<dim>>        scalar_support_points;
   };
 } // namespace lithostress
 

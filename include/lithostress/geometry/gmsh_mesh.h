@@ -39,11 +39,11 @@ namespace lithostress
     void
     read_physical_names();
 
-    std::string                                mesh_file;
-    double                                     scale;
+    std::string                                     mesh_file;
+    double                                          scale;
     std::vector<std::pair<std::string, Point<dim>>> arcs;
-    std::map<std::string, types::boundary_id>  boundary_names;
-    std::map<std::string, types::material_id>  region_names;
+    std::map<std::string, types::boundary_id>       boundary_names;
+    std::map<std::string, types::material_id>       region_names;
   };
 } // namespace lithostress
 

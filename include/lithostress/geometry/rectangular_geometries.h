@@ -108,11 +108,11 @@ namespace lithostress
     named_regions() const override;
 
   private:
-    double                   width;
-    std::vector<double>      interfaces;
-    std::vector<std::string> layer_names;
+    double                    width;
+    std::vector<double>       interfaces;
+    std::vector<std::string>  layer_names;
     std::vector<unsigned int> cells_per_layer;
-    unsigned int             cells_across;
+    unsigned int              cells_across;
   };
 } // namespace lithostress
 

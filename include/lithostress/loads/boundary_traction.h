@@ -24,8 +24,7 @@ namespace lithostress
     static void
     declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
     void
-    parse_parameters(ParameterHandler &             prm,
-                     const ModelDescription<dim> &model);
+    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
 
     /** Whether any traction is given. */
     bool
@@ -37,26 +36,26 @@ namespace lithostress
     bool
     acts_on_boundary(const types::boundary_id id) const override;
     void
-    add_boundary_terms(const FEFaceValues<dim> &         fe_face_values,
+    add_boundary_terms(const FEFaceValues<dim>          &fe_face_values,
                        const types::boundary_id          id,
                        const FEValuesExtractors::Vector &displacement,
-                       FullMatrix<double> &              cell_matrix,
-                       Vector<double> &                  cell_rhs) const override;
+                       FullMatrix<double>               &cell_matrix,
+                       Vector<double> &cell_rhs) const override;
 
     /** The traction vector on part @p id at @p p with outward normal @p n. */
     Tensor<1, dim>
     traction(const types::boundary_id id,
-             const Point<dim> &       p,
-             const Tensor<1, dim> &   n) const;
+             const Point<dim>        &p,
+             const Tensor<1, dim>    &n) const;
 
   private:
     struct Part
     {
-      types::boundary_id                      id;
-      bool                                    from_reference;
-      std::unique_ptr<ParsedExpression<dim>>  normal, shear;
+      types::boundary_id                     id;
+      bool                                   from_reference;
+      std::unique_ptr<ParsedExpression<dim>> normal, shear;
     };
-    std::vector<Part>              parts;
+    std::vector<Part>             parts;
     const ReferenceSolution<dim> *reference = nullptr;
   };
 } // namespace lithostress

@@ -20,12 +20,12 @@ namespace lithostress
     parse_parameters(ParameterHandler &prm);
 
     void
-    add_cell_terms(const FEValues<dim> &             fe_values,
+    add_cell_terms(const FEValues<dim>              &fe_values,
                    const FEValuesExtractors::Vector &displacement,
-                   const Material &                  material,
-                   const ElasticModuli<dim> &        moduli,
-                   FullMatrix<double> &              cell_matrix,
-                   Vector<double> &                  cell_rhs) const override;
+                   const Material                   &material,
+                   const ElasticModuli<dim>         &moduli,
+                   FullMatrix<double>               &cell_matrix,
+                   Vector<double>                   &cell_rhs) const override;
 
     /** g [m s⁻²]. */
     double acceleration = 9.81;

@@ -33,11 +33,11 @@ namespace lithostress
     bool
     acts_on_boundary(const types::boundary_id id) const override;
     void
-    add_boundary_terms(const FEFaceValues<dim> &         fe_face_values,
+    add_boundary_terms(const FEFaceValues<dim>          &fe_face_values,
                        const types::boundary_id          id,
                        const FEValuesExtractors::Vector &displacement,
-                       FullMatrix<double> &              cell_matrix,
-                       Vector<double> &                  cell_rhs) const override;
+                       FullMatrix<double>               &cell_matrix,
+                       Vector<double> &cell_rhs) const override;
     bool
     changes_stiffness() const override
     {

@@ -30,14 +30,14 @@ namespace lithostress
     }
 
     void
-    add_point_terms(const DoFHandler<dim> &          dof_handler,
-                    const FiniteElementSpace<dim> &  fe_space,
+    add_point_terms(const DoFHandler<dim>           &dof_handler,
+                    const FiniteElementSpace<dim>   &fe_space,
                     const AffineConstraints<double> &constraints,
-                    TrilinosWrappers::MPI::Vector &  rhs) const override;
+                    TrilinosWrappers::MPI::Vector   &rhs) const override;
 
     void
     check_against_mesh(const Triangulation<dim> &tria,
-                       const Mapping<dim> &      mapping) const override;
+                       const Mapping<dim>       &mapping) const override;
 
   private:
     std::vector<Point<dim>>     points;

@@ -5,8 +5,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <lithostress/discretization/finite_element_space.h>
@@ -33,7 +33,7 @@ namespace lithostress
   {
     std::map<std::string, types::boundary_id> boundary_parts;
     double                                    length_scale = 1.0;
-    const ReferenceSolution<dim> *            reference    = nullptr;
+    const ReferenceSolution<dim>             *reference    = nullptr;
 
     /** The id of boundary part @p name; InputError naming @p entry if the
      * mesh has no such part. */
@@ -45,8 +45,8 @@ namespace lithostress
   template <int dim>
   bool
   point_in_mesh(const Triangulation<dim> &tria,
-                const Mapping<dim> &      mapping,
-                const Point<dim> &        p);
+                const Mapping<dim>       &mapping,
+                const Point<dim>         &p);
 
   /**
    * A load on the model: contributions to the right-hand side, and possibly
@@ -62,12 +62,12 @@ namespace lithostress
 
     /** Add this load's cell integrals for a cell of @p material. */
     virtual void
-    add_cell_terms(const FEValues<dim> &             fe_values,
+    add_cell_terms(const FEValues<dim>              &fe_values,
                    const FEValuesExtractors::Vector &displacement,
-                   const Material &                  material,
-                   const ElasticModuli<dim> &        moduli,
-                   FullMatrix<double> &              cell_matrix,
-                   Vector<double> &                  cell_rhs) const;
+                   const Material                   &material,
+                   const ElasticModuli<dim>         &moduli,
+                   FullMatrix<double>               &cell_matrix,
+                   Vector<double>                   &cell_rhs) const;
 
     /** Whether this load integrates over boundary part @p id. */
     virtual bool
@@ -75,25 +75,25 @@ namespace lithostress
 
     /** Add this load's integrals over a face on boundary part @p id. */
     virtual void
-    add_boundary_terms(const FEFaceValues<dim> &         fe_face_values,
+    add_boundary_terms(const FEFaceValues<dim>          &fe_face_values,
                        const types::boundary_id          id,
                        const FEValuesExtractors::Vector &displacement,
-                       FullMatrix<double> &              cell_matrix,
-                       Vector<double> &                  cell_rhs) const;
+                       FullMatrix<double>               &cell_matrix,
+                       Vector<double>                   &cell_rhs) const;
 
     /** Add concentrated (point) contributions to the global right-hand side,
      * through @p constraints; called once per assembly on every rank. */
     virtual void
-    add_point_terms(const DoFHandler<dim> &          dof_handler,
-                    const FiniteElementSpace<dim> &  fe_space,
+    add_point_terms(const DoFHandler<dim>           &dof_handler,
+                    const FiniteElementSpace<dim>   &fe_space,
                     const AffineConstraints<double> &constraints,
-                    TrilinosWrappers::MPI::Vector &  rhs) const;
+                    TrilinosWrappers::MPI::Vector   &rhs) const;
 
     /** Check the load against the coarse mesh (points inside the body);
      * throws InputError. */
     virtual void
     check_against_mesh(const Triangulation<dim> &tria,
-                       const Mapping<dim> &      mapping) const;
+                       const Mapping<dim>       &mapping) const;
 
     /** Whether the load changes the stiffness matrix. */
     virtual bool

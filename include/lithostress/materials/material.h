@@ -65,7 +65,7 @@ namespace lithostress
      */
     void
     resolve(const std::map<std::string, types::material_id> &named_regions,
-            const std::set<types::material_id> &             ids_in_mesh);
+            const std::set<types::material_id>              &ids_in_mesh);
 
     /** The material with id @p id. */
     const Material &

@@ -35,13 +35,13 @@ namespace lithostress
     /** Write the solution (with ghost values) of cycle @p cycle into
      * @p directory and update the `.pvd` record. */
     void
-    write(const std::string &                  directory,
+    write(const std::string                   &directory,
           const unsigned int                   cycle,
-          const DoFHandler<dim> &              dof_handler,
-          const FiniteElementSpace<dim> &      fe_space,
-          const MaterialLibrary &              materials,
+          const DoFHandler<dim>               &dof_handler,
+          const FiniteElementSpace<dim>       &fe_space,
+          const MaterialLibrary               &materials,
           const PlaneState                     plane_state,
-          const GriffithFailure &              griffith,
+          const GriffithFailure               &griffith,
           const TrilinosWrappers::MPI::Vector &solution);
 
     bool enabled = true;
@@ -49,7 +49,7 @@ namespace lithostress
     bool last_only = false;
 
   private:
-    unsigned int                              subdivisions = 0;
+    unsigned int                                subdivisions = 0;
     std::vector<std::pair<double, std::string>> records;
   };
 } // namespace lithostress

@@ -26,7 +26,7 @@ namespace lithostress
 
     /** Start a new row. */
     void
-    start_row(const unsigned int cycle,
+    start_row(const unsigned int       cycle,
               const unsigned long long cells,
               const unsigned long long dofs);
 

@@ -25,17 +25,18 @@ namespace lithostress
 
   /**
    * Integrates the errors over the owned cells with a Gauss rule of
-   * degree + 4 points per direction on the model's mapping (so that the geometry error of
-   * curved cells is measured, not hidden) and sums them over all ranks.
+   * degree + 4 points per direction on the model's mapping (so that the
+   * geometry error of curved cells is measured, not hidden) and sums them over
+   * all ranks.
    */
   template <int dim>
   ErrorNorms
-  compute_error_norms(const DoFHandler<dim> &               dof_handler,
-                      const FiniteElementSpace<dim> &      fe_space,
-                      const MaterialLibrary &              materials,
+  compute_error_norms(const DoFHandler<dim>               &dof_handler,
+                      const FiniteElementSpace<dim>       &fe_space,
+                      const MaterialLibrary               &materials,
                       const PlaneState                     plane_state,
                       const TrilinosWrappers::MPI::Vector &solution,
-                      const ReferenceSolution<dim> &       reference);
+                      const ReferenceSolution<dim>        &reference);
 } // namespace lithostress
 
 #endif

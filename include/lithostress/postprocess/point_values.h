@@ -30,12 +30,12 @@ namespace lithostress
    */
   template <int dim>
   std::vector<PointValue<dim>>
-  evaluate_at_points(const DoFHandler<dim> &               dof_handler,
-                     const FiniteElementSpace<dim> &      fe_space,
-                     const MaterialLibrary &              materials,
+  evaluate_at_points(const DoFHandler<dim>               &dof_handler,
+                     const FiniteElementSpace<dim>       &fe_space,
+                     const MaterialLibrary               &materials,
                      const PlaneState                     plane_state,
                      const TrilinosWrappers::MPI::Vector &solution,
-                     const std::vector<Point<dim>> &      points);
+                     const std::vector<Point<dim>>       &points);
 } // namespace lithostress
 
 #endif

@@ -27,10 +27,11 @@ namespace lithostress
    * principal stresses σ1 ≥ σ2 with the unit direction of σ1, and the
    * deviatoric stresses relative to the mean of the three principal
    * stresses (thesis DEVST), and the modified Griffith test of the
-   * material's tensile strength (degree of failure C, regime 0–3 and the fracture
-   * angle in degrees; where T = 0 the test is not made: regime −1, C = 1; SPEC §3.6 — the lithostatic pressure
-   * that FAIL adds without body forces is not added yet), tension positive,
-   * evaluated with the moduli of each cell's material.
+   * material's tensile strength (degree of failure C, regime 0–3 and the
+   * fracture angle in degrees; where T = 0 the test is not made: regime −1, C =
+   * 1; SPEC §3.6 — the lithostatic pressure that FAIL adds without body forces
+   * is not added yet), tension positive, evaluated with the moduli of each
+   * cell's material.
    */
   template <int dim>
   class StressPostprocessor : public DataPostprocessor<dim>

@@ -20,8 +20,8 @@ namespace lithostress
    */
   template <int dim>
   std::vector<std::array<double, 1 + 2 * dim>>
-  surface_profile(const DoFHandler<dim> &               dof_handler,
-                  const FiniteElementSpace<dim> &      fe_space,
+  surface_profile(const DoFHandler<dim>               &dof_handler,
+                  const FiniteElementSpace<dim>       &fe_space,
                   const TrilinosWrappers::MPI::Vector &solution,
                   const types::boundary_id             boundary);
 
@@ -29,7 +29,7 @@ namespace lithostress
   template <int dim>
   void
   write_surface_profile(
-    const std::string &                                 filename,
+    const std::string                                  &filename,
     const std::vector<std::array<double, 1 + 2 * dim>> &profile);
 } // namespace lithostress
 

@@ -28,7 +28,7 @@ namespace lithostress
     static void
     declare_parameters(ParameterHandler &prm);
     void
-    parse_parameters(ParameterHandler &     prm,
+    parse_parameters(ParameterHandler      &prm,
                      const MaterialLibrary &materials,
                      const double           length_scale);
 
@@ -41,7 +41,7 @@ namespace lithostress
     /** Print the comparison for a surface profile (x, y, u_x, u_y). */
     void
     report(const std::vector<std::array<double, 5>> &profile,
-           RunLog &                                  log) const;
+           RunLog                                   &log) const;
 
     double load_position, line_load, thickness, fluid_density, gravity;
     double rigidity, alpha, w0;

@@ -29,7 +29,7 @@ namespace lithostress
 
     /** Read the parameters; @p materials are resolved. */
     virtual void
-    parse_parameters(ParameterHandler &     prm,
+    parse_parameters(ParameterHandler      &prm,
                      const MaterialLibrary &materials,
                      const PlaneState       plane_state,
                      const double           length_scale) = 0;
@@ -55,7 +55,7 @@ namespace lithostress
 
     /** The selected solution, or null for "none". */
     static std::unique_ptr<ReferenceSolution<dim>>
-    create(ParameterHandler &     prm,
+    create(ParameterHandler      &prm,
            const MaterialLibrary &materials,
            const PlaneState       plane_state,
            const double           length_scale);

@@ -50,24 +50,24 @@ namespace lithostress
     /** Refine @p tria once, as configured; @p solution has ghost values. */
     void
     refine(parallel::distributed::Triangulation<dim> &tria,
-           const DoFHandler<dim> &                    dof_handler,
-           const FiniteElementSpace<dim> &            fe_space,
-           const MaterialLibrary &                    materials,
+           const DoFHandler<dim>                     &dof_handler,
+           const FiniteElementSpace<dim>             &fe_space,
+           const MaterialLibrary                     &materials,
            const PlaneState                           plane_state,
-           const TrilinosWrappers::MPI::Vector &      solution) const;
+           const TrilinosWrappers::MPI::Vector       &solution) const;
 
     /** The error indicator per active cell (zero on non-owned cells). */
     Vector<float>
-    indicators(const DoFHandler<dim> &               dof_handler,
-               const FiniteElementSpace<dim> &      fe_space,
-               const MaterialLibrary &              materials,
+    indicators(const DoFHandler<dim>               &dof_handler,
+               const FiniteElementSpace<dim>       &fe_space,
+               const MaterialLibrary               &materials,
                const PlaneState                     plane_state,
                const TrilinosWrappers::MPI::Vector &solution) const;
 
     /** Dörfler marking of the cells carrying the refine fraction of Σ η². */
     void
     mark_fraction_of_error(parallel::distributed::Triangulation<dim> &tria,
-                           const Vector<float> &                      eta) const;
+                           const Vector<float> &eta) const;
 
     unsigned int initial_global_refinement = 0;
     unsigned int n_cycles                  = 1;

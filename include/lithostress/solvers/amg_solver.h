@@ -19,21 +19,21 @@ namespace lithostress
   public:
     struct Settings
     {
-      double       relative_tolerance = 1e-10;
-      unsigned int max_iterations     = 1000;
-      unsigned int smoother_sweeps    = 2;
+      double       relative_tolerance    = 1e-10;
+      unsigned int max_iterations        = 1000;
+      unsigned int smoother_sweeps       = 2;
       double       aggregation_threshold = 1e-4;
       std::string  smoother              = "Chebyshev";
       /** Time matrix-vector products (for the benchmark). */
-      bool         time_matrix_vector_product = false;
+      bool time_matrix_vector_product = false;
     };
 
     explicit AMGSolver(const Settings &settings);
 
     SolverReport
-    solve(const DoFHandler<dim> &         dof_handler,
+    solve(const DoFHandler<dim>         &dof_handler,
           const FiniteElementSpace<dim> &fe_space,
-          const LinearSystem<dim> &      system,
+          const LinearSystem<dim>       &system,
           TrilinosWrappers::MPI::Vector &solution) override;
 
   private:

@@ -16,9 +16,9 @@ namespace lithostress
     explicit DirectSolver(const std::string &amesos_solver);
 
     SolverReport
-    solve(const DoFHandler<dim> &         dof_handler,
+    solve(const DoFHandler<dim>         &dof_handler,
           const FiniteElementSpace<dim> &fe_space,
-          const LinearSystem<dim> &      system,
+          const LinearSystem<dim>       &system,
           TrilinosWrappers::MPI::Vector &solution) override;
 
   private:

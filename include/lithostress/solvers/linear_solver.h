@@ -17,12 +17,12 @@ namespace lithostress
   struct SolverReport
   {
     std::string  solver;
-    unsigned int iterations   = 0;
-    double       setup_time   = 0;
-    double       solve_time   = 0;
+    unsigned int iterations     = 0;
+    double       setup_time     = 0;
+    double       solve_time     = 0;
     double       final_residual = 0;
     /** Time of one product with the system matrix, if measured. */
-    double       matrix_vector_product_time = 0;
+    double matrix_vector_product_time = 0;
   };
 
   /**
@@ -42,9 +42,9 @@ namespace lithostress
      * distributed by the caller). Throws ComputationError if the solver
      * does not converge. */
     virtual SolverReport
-    solve(const DoFHandler<dim> &         dof_handler,
+    solve(const DoFHandler<dim>         &dof_handler,
           const FiniteElementSpace<dim> &fe_space,
-          const LinearSystem<dim> &      system,
+          const LinearSystem<dim>       &system,
           TrilinosWrappers::MPI::Vector &solution) = 0;
 
     /** Whether this solver needs LinearSystem::matrix. */

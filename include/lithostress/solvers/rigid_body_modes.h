@@ -23,9 +23,9 @@ namespace lithostress
    */
   template <int dim>
   std::unique_ptr<Epetra_MultiVector>
-  make_rigid_body_modes(const DoFHandler<dim> &         dof_handler,
+  make_rigid_body_modes(const DoFHandler<dim>         &dof_handler,
                         const FiniteElementSpace<dim> &fe_space,
-                        const Epetra_Map &              map);
+                        const Epetra_Map              &map);
 } // namespace lithostress
 
 #endif
