@@ -448,7 +448,11 @@ namespace lithostress
           }
       }
     if (thin_plate.enabled)
-      thin_plate.report(thin_plate_profile, log);
+      thin_plate.report(thin_plate_profile,
+                        log,
+                        Utilities::MPI::this_mpi_process(communicator) == 0
+                          ? output_directory + "/thin_plate_comparison.csv"
+                          : std::string());
     write_statistics();
     timer->print_summary();
     log << '\n' << timer_text.str();

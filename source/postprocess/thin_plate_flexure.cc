@@ -4,6 +4,7 @@
 #include <lithostress/postprocess/thin_plate_flexure.h>
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 
@@ -74,8 +75,11 @@ namespace lithostress
 
   void
   ThinPlateFlexure::report(const std::vector<std::array<double, 5>> &profile,
-                           RunLog                                   &log) const
+                           RunLog                                   &log,
+                           const std::string &csv_file) const
   {
+    std::ostringstream csv;
+    csv << "quantity,finite_element,thin_plate\n" << std::setprecision(12);
     std::ostringstream out;
     out << std::fixed << std::setprecision(2);
     out << "\nThin-plate comparison (SPEC §4): D = " << std::scientific
@@ -94,6 +98,11 @@ namespace lithostress
             if (d > 0.25 * alpha && row[3] > best_u)
               best_u = row[3], best_x = d;
           }
+        const std::string name = side < 0 ? "left" : "right";
+        csv << "forebulge_distance_" << name << "_m," << best_x << ','
+            << numbers::PI * alpha << '\n'
+            << "forebulge_height_" << name << "_m," << best_u << ','
+            << w0 * std::exp(-numbers::PI) << '\n';
         out << "  FE " << (side < 0 ? "left " : "right") << "        "
             << std::setw(10) << best_x / 1e3 << "           " << std::setw(10)
             << best_u << "  (" << std::setprecision(1)
@@ -114,6 +123,8 @@ namespace lithostress
                 (x - profile[k][0]) / (profile[k + 1][0] - profile[k][0]);
               const double u =
                 -((1 - t) * profile[k][3] + t * profile[k + 1][3]);
+              csv << "deflection_at_" << d << "_alpha_m," << u << ','
+                  << deflection(d * alpha) << '\n';
               out << "    " << std::setw(12) << d * alpha / 1e3 << "   "
                   << std::setw(14) << deflection(d * alpha) << "   "
                   << std::setw(8) << u << '\n';
@@ -121,5 +132,10 @@ namespace lithostress
             }
       }
     log << out.str();
+    if (!csv_file.empty())
+      {
+        std::ofstream file(csv_file);
+        file << csv.str();
+      }
   }
 } // namespace lithostress

@@ -7,6 +7,7 @@
 #include <lithostress/output/run_log.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace lithostress
@@ -38,10 +39,12 @@ namespace lithostress
     double
     deflection(const double x) const;
 
-    /** Print the comparison for a surface profile (x, y, u_x, u_y). */
+    /** Print the comparison for a surface profile (x, y, u_x, u_y) and
+     * write it to @p csv_file (empty: no file). */
     void
     report(const std::vector<std::array<double, 5>> &profile,
-           RunLog                                   &log) const;
+           RunLog                                   &log,
+           const std::string                        &csv_file) const;
 
     double load_position, line_load, thickness, fluid_density, gravity;
     double rigidity, alpha, w0;
