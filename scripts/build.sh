@@ -9,5 +9,7 @@ cd "$root/$dir"
 if [ ! -f CMakeCache.txt ] || ! grep -q "CMAKE_BUILD_TYPE:STRING=$type" CMakeCache.txt; then
   cmake -DCMAKE_BUILD_TYPE="$type" "$root" >/dev/null
 fi
-make -j"$(nproc)" --no-print-directory lithostress 2>&1 | grep -v "^\[" || true
+# Build every target (the program and the unit-test programs); progress
+# lines are filtered, a failing build still fails this script (pipefail).
+make -j"$(nproc)" --no-print-directory 2>&1 | { grep -v "^\[" || true; }
 test -x "$root/$dir/lithostress"
