@@ -199,20 +199,8 @@ namespace lithostress
 
     for (const Point<dim> &p : points)
       {
-        bool inside = false;
-        for (const auto &cell : triangulation.cell_iterators_on_level(0))
-          {
-            try
-              {
-                const Point<dim> unit =
-                  fe_space->mapping().transform_real_to_unit_cell(cell, p);
-                inside =
-                  inside || GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-8);
-              }
-            catch (...)
-              {
-              }
-          }
+        const bool inside =
+          point_in_mesh<dim>(triangulation, fe_space->mapping(), p);
         if (!inside)
           throw_input_error("Convergence study/Points",
                             "the point (" + std::to_string(p[0]) + ", " +

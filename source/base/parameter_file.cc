@@ -9,29 +9,46 @@
 
 namespace lithostress
 {
-  namespace
+  std::string
+  one_line(const std::string &text)
   {
-    std::string
-    message_of(const ExceptionBase &exc)
-    {
-      std::ostringstream text;
-      exc.print_info(text);
-      std::string message = text.str();
-      // deal.II's messages are indented over several lines: make them one
-      // line with single spaces.
-      std::string one_line;
-      for (const char c : message)
-        {
-          const char d = (c == '\n' || c == '\t') ? ' ' : c;
-          if (d == ' ' && (one_line.empty() || one_line.back() == ' '))
-            continue;
-          one_line += d;
-        }
-      while (!one_line.empty() && one_line.back() == ' ')
-        one_line.pop_back();
-      return one_line;
-    }
-  } // namespace
+    std::string result;
+    for (const char c : text)
+      {
+        const char d = (c == '\n' || c == '\t') ? ' ' : c;
+        if (d == ' ' && (result.empty() || result.back() == ' '))
+          continue;
+        result += d;
+      }
+    while (!result.empty() && result.back() == ' ')
+      result.pop_back();
+    return result;
+  }
+
+  std::string
+  one_line_message(const ExceptionBase &exc)
+  {
+    std::ostringstream text;
+    exc.print_info(text);
+    return one_line(text.str());
+  }
+
+  double
+  parse_number(const std::string &text, const std::string &entry)
+  {
+    const std::string trimmed = Utilities::trim(text);
+    try
+      {
+        std::size_t  used  = 0;
+        const double value = std::stod(trimmed, &used);
+        if (used == trimmed.size())
+          return value;
+      }
+    catch (const std::exception &)
+      {
+      }
+    throw_input_error(entry, "<" + text + "> is not a number");
+  }
 
   std::vector<std::string>
   split_list(const std::string &text, const char separator)
@@ -64,20 +81,7 @@ namespace lithostress
                               std::to_string(dim) + " coordinates");
         Point<dim> p;
         for (unsigned int d = 0; d < dim; ++d)
-          {
-            try
-              {
-                std::size_t used = 0;
-                p[d]             = std::stod(coordinates[d], &used) * scale;
-                if (used != coordinates[d].size())
-                  throw std::invalid_argument(coordinates[d]);
-              }
-            catch (const std::exception &)
-              {
-                throw_input_error(entry,
-                                  "<" + coordinates[d] + "> is not a number");
-              }
-          }
+          p[d] = parse_number(coordinates[d], entry) * scale;
         points.push_back(p);
       }
     return points;
@@ -123,7 +127,8 @@ namespace lithostress
       {
         for (unsigned int i = 0; i < entered; ++i)
           prm.leave_subsection();
-        throw InputError("override <" + assignment + ">: " + message_of(exc));
+        throw InputError("override <" + assignment +
+                         ">: " + one_line_message(exc));
       }
     for (unsigned int i = 0; i < entered; ++i)
       prm.leave_subsection();
@@ -150,7 +155,7 @@ namespace lithostress
       }
     catch (const ExceptionBase &exc)
       {
-        throw InputError(message_of(exc));
+        throw InputError(one_line_message(exc));
       }
     for (const std::string &o : overrides)
       {
@@ -172,7 +177,7 @@ namespace lithostress
       }
     catch (const ExceptionBase &exc)
       {
-        throw InputError(message_of(exc));
+        throw InputError(one_line_message(exc));
       }
     for (const std::string &o : overrides)
       apply_override(prm, o);

@@ -20,28 +20,11 @@ namespace lithostress
     for (const std::string &item : split_list(constants_text))
       {
         const auto equal = item.find('=');
-        double     value = 0;
-        bool       ok    = (equal != std::string::npos);
-        if (ok)
-          {
-            try
-              {
-                std::size_t       used = 0;
-                const std::string number =
-                  Utilities::trim(item.substr(equal + 1));
-                value = std::stod(number, &used);
-                ok    = (used == number.size());
-              }
-            catch (const std::exception &)
-              {
-                ok = false;
-              }
-          }
-        if (!ok)
+        if (equal == std::string::npos)
           throw_input_error(entry,
                             "constant <" + item +
-                              "> is not of the form "
-                              "name=number");
+                              "> is not of the form name=number");
+        const double value = parse_number(item.substr(equal + 1), entry);
         constants[Utilities::trim(item.substr(0, equal))] = value;
       }
     const std::string variables = (dim == 2) ? "x,y,t" : "x,y,z,t";
@@ -60,19 +43,11 @@ namespace lithostress
     catch (const ExceptionBase &exc)
       {
         std::cerr.rdbuf(cerr_buffer);
-        std::ostringstream message;
-        exc.print_info(message);
-        std::string m;
-        for (const char c : message.str() + " " + muparser_report.str())
-          {
-            const char d = (c == '\n' || c == '\t') ? ' ' : c;
-            if (d == ' ' && (m.empty() || m.back() == ' '))
-              continue;
-            m += d;
-          }
+        const std::string m =
+          one_line_message(exc) + " " + one_line(muparser_report.str());
         throw_input_error(entry,
                           "cannot parse the expression <" + expression +
-                            ">: " + Utilities::trim(m));
+                            ">: " + m);
       }
   }
 

@@ -46,19 +46,8 @@ namespace lithostress
                           std::to_string(names.size()) + ")");
     for (unsigned int i = 0; i < names.size(); ++i)
       {
-        double rho = 0;
-        try
-          {
-            std::size_t used = 0;
-            rho              = std::stod(densities[i], &used);
-            if (used != densities[i].size())
-              throw std::invalid_argument(densities[i]);
-          }
-        catch (const std::exception &)
-          {
-            throw_input_error(where + "Fluid densities",
-                              "<" + densities[i] + "> is not a number");
-          }
+        const double rho =
+          parse_number(densities[i], where + "Fluid densities");
         if (!(rho > 0))
           throw_input_error(where + "Fluid densities",
                             "the density of the fluid on <" + names[i] +

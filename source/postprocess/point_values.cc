@@ -17,7 +17,8 @@ namespace lithostress
                      const TrilinosWrappers::MPI::Vector &solution,
                      const std::vector<Point<dim>>       &points)
   {
-    const unsigned int  n_values = dim + dim * dim + 1 + 1;
+    // u, σ (dim × dim) and σzz per point; only the winning rank fills them.
+    const unsigned int  n_values = dim + dim * dim + 1;
     std::vector<double> local(points.size() * n_values, 0.0);
     const MPI_Comm      comm = dof_handler.get_communicator();
     for (unsigned int k = 0; k < points.size(); ++k)
@@ -94,8 +95,7 @@ namespace lithostress
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
             v[dim + a * dim + b] = stress[a][b];
-        v[dim + dim * dim]     = moduli.sigma_zz(strain);
-        v[dim + dim * dim + 1] = 1.0;
+        v[dim + dim * dim] = moduli.sigma_zz(strain);
       }
     std::vector<double> global(local.size());
     Utilities::MPI::sum(local, comm, global);
@@ -103,15 +103,14 @@ namespace lithostress
     std::vector<PointValue<dim>> result(points.size());
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const double *v     = &global[k * n_values];
-        const double  count = v[dim + dim * dim + 1];
-        result[k].point     = points[k];
+        const double *v = &global[k * n_values];
+        result[k].point = points[k];
         for (unsigned int d = 0; d < dim; ++d)
-          result[k].displacement[d] = v[d] / count;
+          result[k].displacement[d] = v[d];
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = a; b < dim; ++b)
-            result[k].stress[a][b] = v[dim + a * dim + b] / count;
-        result[k].sigma_zz = v[dim + dim * dim] / count;
+            result[k].stress[a][b] = v[dim + a * dim + b];
+        result[k].sigma_zz = v[dim + dim * dim];
       }
     return result;
   }

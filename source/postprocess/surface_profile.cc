@@ -2,6 +2,7 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
 
 #include <lithostress/postprocess/surface_profile.h>
 
@@ -24,21 +25,26 @@ namespace lithostress
     const FE_Q<dim>           scalar(fe_space.degree());
     const Quadrature<dim - 1> points(scalar.get_unit_face_support_points());
     std::vector<double>       local;
+    hp::QCollection<dim - 1>  face_points;
+    for (unsigned int i = 0; i < fe_space.fe_collection().size(); ++i)
+      face_points.push_back(points);
+    hp::FEFaceValues<dim>       hp_face_values(fe_space.mapping_collection(),
+                                         fe_space.fe_collection(),
+                                         face_points,
+                                         update_values |
+                                           update_quadrature_points);
+    std::vector<Tensor<1, dim>> values(points.size());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
               cell->face(f)->boundary_id() == boundary)
             {
-              FEFaceValues<dim> fe_face_values(fe_space.mapping(),
-                                               cell->get_fe(),
-                                               points,
-                                               update_values |
-                                                 update_quadrature_points);
-              fe_face_values.reinit(cell, f);
+              hp_face_values.reinit(cell, f);
+              const FEFaceValues<dim> &fe_face_values =
+                hp_face_values.get_present_fe_values();
               const auto u = fe_space.displacement(
                 fe_space.field_of(cell->active_fe_index()));
-              std::vector<Tensor<1, dim>> values(points.size());
               fe_face_values[u].get_function_values(solution, values);
               for (unsigned int q = 0; q < points.size(); ++q)
                 {

@@ -10,6 +10,7 @@
 #include <deal.II/numerics/vector_tools_common.h>
 
 #include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
 #include <lithostress/refinement/mesh_refinement.h>
 
 namespace lithostress
@@ -77,20 +78,8 @@ namespace lithostress
                       ? Marking::fraction_of_error
                       : Marking::fraction_of_cells;
     auto fraction = [&](const std::string &entry) {
-      const std::string text = prm.get(entry);
-      double            value;
-      try
-        {
-          std::size_t used = 0;
-          value            = std::stod(text, &used);
-          if (used != text.size())
-            throw std::invalid_argument(text);
-        }
-      catch (const std::exception &)
-        {
-          throw_input_error("Mesh refinement/" + entry,
-                            "<" + text + "> is not a number");
-        }
+      const std::string text  = prm.get(entry);
+      const double      value = parse_number(text, "Mesh refinement/" + entry);
       if (value < 0 || value > 1)
         throw_input_error("Mesh refinement/" + entry,
                           "must lie in [0, 1], got " + text);

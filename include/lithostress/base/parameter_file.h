@@ -62,6 +62,24 @@ namespace lithostress
   };
 
   /**
+   * The number in @p text (surrounding blanks allowed, nothing else);
+   * throws InputError naming @p entry otherwise.
+   */
+  double
+  parse_number(const std::string &text, const std::string &entry);
+
+  /** @p text with line breaks and runs of blanks turned into single spaces. */
+  std::string
+  one_line(const std::string &text);
+
+  /**
+   * The message of a deal.II exception as one line with single spaces
+   * (deal.II's messages are indented over several lines).
+   */
+  std::string
+  one_line_message(const ExceptionBase &exc);
+
+  /**
    * Split a comma separated list, trimming white space; empty items dropped.
    */
   std::vector<std::string>
