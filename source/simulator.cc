@@ -6,7 +6,9 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/discretization/elastic_assembler.h>
 #include <lithostress/postprocess/error_norms.h>
+#include <lithostress/postprocess/force_balance.h>
 #include <lithostress/postprocess/point_values.h>
+#include <lithostress/postprocess/stress_sampling.h>
 #include <lithostress/postprocess/surface_profile.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
 #include <lithostress/simulator.h>
@@ -63,9 +65,18 @@ namespace lithostress
                       "",
                       Patterns::Anything(),
                       "Boundary part whose displacement is written to "
-                      "surface_profile.csv (x, y, u_x, u_y in m, sorted by "
+                      "surface_profile.csv (x, u_x, u_y, y in m, sorted by "
                       "x) each cycle; empty = none.");
+    prm.declare_entry("Force balance",
+                      "true",
+                      Patterns::Bool(),
+                      "After the last cycle, print the resultant of every "
+                      "load and the reaction of every part with prescribed "
+                      "displacement, and write force_balance.csv [N/m]; "
+                      "costs one more assembly.");
     prm.leave_subsection();
+    StressDepthProfiles<dim>::declare_parameters(prm);
+    Figures<dim>::declare_parameters(prm);
     ThinPlateFlexure::declare_parameters(prm);
     GriffithFailure::declare_parameters(prm);
     prm.enter_subsection("Convergence study");
@@ -178,17 +189,28 @@ namespace lithostress
     loads.parse_parameters(prm, model);
     for (const auto &load : loads.loads())
       load->check_against_mesh(triangulation, fe_space->mapping());
+    stress_model =
+      std::make_unique<StressModel<dim>>(materials, plane_state, loads);
     prescribed_displacement.parse_parameters(prm, model);
 
     prm.enter_subsection("Output");
     const std::string surface =
       Utilities::trim(prm.get("Surface profile boundary"));
+    with_force_balance = prm.get_bool("Force balance");
     prm.leave_subsection();
     if (!surface.empty())
       surface_boundary =
         model.boundary_id(surface, "Output/Surface profile boundary");
     thin_plate.parse_parameters(prm, materials, length_scale);
-    griffith.parse_parameters(prm);
+    griffith.parse_parameters(prm, length_scale);
+    griffith.resolve_lithostatic_pressure(loads.without_body_force() ||
+                                          loads.densities_stripped());
+    profiles.parse_parameters(prm, length_scale);
+    profiles.check_against_mesh(triangulation);
+    prm.enter_subsection("Geometry");
+    const std::string length_unit = prm.get("Length unit");
+    prm.leave_subsection();
+    figures.parse_parameters(prm, length_scale, length_unit);
     if (thin_plate.enabled && surface.empty())
       throw_input_error("Thin plate comparison/Enabled",
                         "needs Output/Surface profile boundary");
@@ -265,8 +287,12 @@ namespace lithostress
   void
   Simulator<dim>::assemble_system()
   {
-    TimerOutput::Scope    t(*timer, "assemble");
-    Timer                 clock(communicator, true);
+    TimerOutput::Scope t(*timer, "assemble");
+    Timer              clock(communicator, true);
+    for (const auto &load : loads.loads())
+      load->prepare_for_mesh(triangulation,
+                             fe_space->mapping(),
+                             fe_space->face_quadrature()[0]);
     ElasticAssembler<dim> assembler(*fe_space, materials, plane_state, loads);
     assembler.assemble(dof_handler, system, linear_solver->needs_matrix());
     statistics.assemble_time = clock.wall_time();
@@ -300,7 +326,7 @@ namespace lithostress
     if (reference)
       {
         const ErrorNorms e = compute_error_norms(
-          dof_handler, *fe_space, materials, plane_state, solution, *reference);
+          dof_handler, *fe_space, *stress_model, solution, *reference);
         study.add("L2(u)", e.displacement_l2, ConvergenceStudy::Kind::error);
         study.add("energy", e.energy, ConvergenceStudy::Kind::error);
         study.add("L2(stress)", e.stress_l2, ConvergenceStudy::Kind::error);
@@ -317,8 +343,13 @@ namespace lithostress
                  << e.displacement_l2 / e.displacement_l2_norm << ", energy "
                  << e.energy / e.energy_norm;
       }
-    const auto values = evaluate_at_points(
-      dof_handler, *fe_space, materials, plane_state, solution, points);
+    const auto samples = sample_stresses(
+      dof_handler, *fe_space, *stress_model, griffith, solution, points);
+    if (!points.empty() && Utilities::MPI::this_mpi_process(communicator) == 0)
+      write_stress_samples(output_directory + "/point_values.csv", samples);
+    std::vector<PointValue<dim>> values;
+    for (const auto &sample : samples)
+      values.push_back(sample.value);
     for (unsigned int k = 0; k < values.size(); ++k)
       {
         const std::string at = "@P" + std::to_string(k + 1);
@@ -384,6 +415,16 @@ namespace lithostress
       }
     log << "lithostress: " << Utilities::MPI::n_mpi_processes(communicator)
         << " MPI rank(s), output in " << output_directory << "/" << std::endl;
+    log << "Loads:" << (loads.loads().empty() ? " none" : "") << '\n';
+    for (const auto &load : loads.loads())
+      log << "  " << load->description() << '\n';
+    if (loads.densities_stripped())
+      log << "Note: densities are stripped; every stress reported is "
+             "relative to the reference column.\n";
+    if (griffith.adds_lithostatic_pressure())
+      log << "Griffith test: the lithostatic stress -rho g depth of each "
+             "material is added to the principal stresses before the test "
+             "(the model has no full body force), as in the thesis' FAIL.\n";
 
     {
       TimerOutput::Scope t(*timer, "refine");
@@ -398,12 +439,8 @@ namespace lithostress
           {
             TimerOutput::Scope t(*timer, "refine");
             Timer              clock(communicator, true);
-            refinement.refine(triangulation,
-                              dof_handler,
-                              *fe_space,
-                              materials,
-                              plane_state,
-                              solution);
+            refinement.refine(
+              triangulation, dof_handler, *fe_space, *stress_model, solution);
             statistics.mesh_time = clock.wall_time();
           }
         setup_dofs();
@@ -416,8 +453,7 @@ namespace lithostress
                                 cycle,
                                 dof_handler,
                                 *fe_space,
-                                materials,
-                                plane_state,
+                                *stress_model,
                                 griffith,
                                 solution);
       }
@@ -435,12 +471,48 @@ namespace lithostress
             study.write_csv(csv);
           }
       }
+    if (with_force_balance)
+      {
+        TimerOutput::Scope      t(*timer, "force balance");
+        const ForceBalance<dim> balance =
+          compute_force_balance(dof_handler,
+                                *fe_space,
+                                *stress_model,
+                                loads,
+                                prescribed_displacement,
+                                solution);
+        log << '\n' << balance.table();
+        if (Utilities::MPI::this_mpi_process(communicator) == 0)
+          balance.write_csv(output_directory + "/force_balance.csv");
+      }
+    {
+      TimerOutput::Scope t(*timer, "profiles and figures");
+      profiles.write(output_directory,
+                     dof_handler,
+                     *fe_space,
+                     *stress_model,
+                     griffith,
+                     solution);
+      figures.write_data(
+        output_directory,
+        std::filesystem::path(output_directory).filename().string(),
+        dof_handler,
+        *fe_space,
+        *stress_model,
+        griffith,
+        solution);
+    }
     if (thin_plate.enabled)
       thin_plate.report(thin_plate_profile,
                         log,
                         Utilities::MPI::this_mpi_process(communicator) == 0
                           ? output_directory + "/thin_plate_comparison.csv"
                           : std::string());
+    if (figures.enabled)
+      {
+        TimerOutput::Scope t(*timer, "profiles and figures");
+        figures.plot(output_directory, log);
+      }
     write_statistics();
     timer->print_summary();
     log << '\n' << timer_text.str();

@@ -47,6 +47,24 @@ def table(output):
         return rows
 
 
+def read_csv(path):
+    """The rows of a CSV file as dicts; numbers become floats, other
+    fields stay strings."""
+    def value(v):
+        try:
+            return float(v)
+        except ValueError:
+            return v
+    with open(path) as f:
+        return [{k: value(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def forces(output):
+    """force_balance.csv of <output> as {(kind, name): (F_x, F_y)}."""
+    return {(r["kind"], r["name"]): (r["F_x"], r["F_y"])
+            for r in read_csv(os.path.join(output, "force_balance.csv"))}
+
+
 def slope(rows, column, first=0):
     """Least-squares rate -dlog(e)/dlog(N) over rows[first:]."""
     xs = [math.log(r["dofs"]) for r in rows[first:]]

@@ -16,10 +16,13 @@
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/material.h>
+#include <lithostress/materials/stress_model.h>
+#include <lithostress/output/figures.h>
 #include <lithostress/output/run_log.h>
 #include <lithostress/output/solution_output.h>
 #include <lithostress/postprocess/convergence_study.h>
 #include <lithostress/postprocess/griffith_failure.h>
+#include <lithostress/postprocess/stress_depth_profiles.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
 #include <lithostress/reference_solutions/reference_solution.h>
 #include <lithostress/refinement/mesh_refinement.h>
@@ -116,6 +119,7 @@ namespace lithostress
     std::unique_ptr<ReferenceSolution<dim>>   reference;
     LoadCollection<dim>                       loads;
     PrescribedDisplacement<dim>               prescribed_displacement;
+    std::unique_ptr<StressModel<dim>>         stress_model;
     std::unique_ptr<FiniteElementSpace<dim>>  fe_space;
     DoFHandler<dim>                           dof_handler;
     LinearSystem<dim>                         system;
@@ -124,9 +128,12 @@ namespace lithostress
     MeshRefinement<dim>                       refinement;
     SolutionOutput<dim>                       solution_output;
     std::vector<Point<dim>>                   points;
-    types::boundary_id surface_boundary = numbers::invalid_boundary_id;
-    ThinPlateFlexure   thin_plate;
-    GriffithFailure    griffith;
+    types::boundary_id       surface_boundary   = numbers::invalid_boundary_id;
+    bool                     with_force_balance = true;
+    ThinPlateFlexure         thin_plate;
+    GriffithFailure          griffith;
+    StressDepthProfiles<dim> profiles;
+    Figures<dim>             figures;
     std::vector<std::array<double, 5>> thin_plate_profile;
     ConvergenceStudy                   study;
     CycleStatistics                    statistics;

@@ -1,4 +1,5 @@
 #include <deal.II/base/function.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -98,7 +99,8 @@ namespace lithostress
          split_list(prm.get("Prescribed displacement parts")))
       {
         Part part;
-        part.id = model.boundary_id(
+        part.name = name;
+        part.id   = model.boundary_id(
           name, "Boundary conditions/Prescribed displacement parts");
         prm.enter_subsection(name);
         const std::string constants = prm.get("Constants");
@@ -167,6 +169,37 @@ namespace lithostress
                                                  constraints,
                                                  ComponentMask(mask));
       }
+  }
+
+  template <int dim>
+  std::vector<std::pair<std::string, std::array<IndexSet, dim>>>
+  PrescribedDisplacement<dim>::constrained_dofs(
+    const DoFHandler<dim>         &dof_handler,
+    const FiniteElementSpace<dim> &fe_space) const
+  {
+    const unsigned int n_components = fe_space.fe_collection().n_components();
+    std::vector<std::pair<std::string, std::array<IndexSet, dim>>> result;
+    IndexSet taken(dof_handler.n_dofs());
+    for (const Part &part : parts)
+      {
+        std::array<IndexSet, dim> dofs;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            dofs[d].set_size(dof_handler.n_dofs());
+            if (!part.from_reference[d] && part.component[d] == nullptr)
+              continue;
+            std::vector<bool> mask(n_components, false);
+            for (unsigned int c = d; c < n_components; c += dim)
+              mask[c] = true;
+            dofs[d] = DoFTools::extract_boundary_dofs(dof_handler,
+                                                      ComponentMask(mask),
+                                                      {part.id});
+            dofs[d].subtract_set(taken);
+            taken.add_indices(dofs[d]);
+          }
+        result.emplace_back(part.name, dofs);
+      }
+    return result;
   }
 
   template class PrescribedDisplacement<2>;

@@ -52,8 +52,6 @@ namespace lithostress
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> dofs;
-    std::vector<unsigned int>            component;
-    std::vector<Tensor<1, dim>>          grad;
 
     if (with_matrix)
       system.matrix = 0;
@@ -74,44 +72,7 @@ namespace lithostress
           cell_rhs.reinit(n);
 
           if (with_matrix)
-            {
-              // Isotropic stiffness through the scalar shape gradients: each
-              // shape function φ_i = N_i e_{c_i} of the primitive element has
-              // one nonzero component, so
-              //   ε(φ_i) : C ε(φ_j) = λ ∂_{c_i}N_i ∂_{c_j}N_j
-              //                      + μ (∂_{c_j}N_i ∂_{c_i}N_j + δ_{c_i c_j}
-              //                      ∇N_i·∇N_j).
-              const FiniteElement<dim> &fe = cell->get_fe();
-              component.resize(n);
-              for (unsigned int i = 0; i < n; ++i)
-                component[i] = fe.system_to_component_index(i).first % dim;
-              const double lambda = moduli.lambda_in_plane;
-              const double mu     = moduli.mu;
-              for (const unsigned int q : fe_values.quadrature_point_indices())
-                {
-                  const double JxW = fe_values.JxW(q);
-                  grad.resize(n);
-                  for (unsigned int i = 0; i < n; ++i)
-                    grad[i] = fe_values.shape_grad(i, q);
-                  for (unsigned int i = 0; i < n; ++i)
-                    {
-                      const unsigned int   ci = component[i];
-                      const Tensor<1, dim> gi = grad[i] * JxW;
-                      for (unsigned int j = 0; j <= i; ++j)
-                        {
-                          const unsigned int cj = component[j];
-                          double value = lambda * gi[ci] * grad[j][cj] +
-                                         mu * gi[cj] * grad[j][ci];
-                          if (ci == cj)
-                            value += mu * (gi * grad[j]);
-                          cell_matrix(i, j) += value;
-                        }
-                    }
-                }
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = i + 1; j < n; ++j)
-                  cell_matrix(i, j) = cell_matrix(j, i);
-            }
+            add_cell_stiffness(fe_values, moduli, cell_matrix);
           for (const auto &load : loads.loads())
             load->add_cell_terms(
               fe_values, u, material, moduli, cell_matrix, cell_rhs);
@@ -150,6 +111,50 @@ namespace lithostress
     if (with_matrix)
       system.matrix.compress(VectorOperation::add);
     system.rhs.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::add_cell_stiffness(const FEValues<dim>      &fe_values,
+                                            const ElasticModuli<dim> &moduli,
+                                            FullMatrix<double> &cell_matrix)
+  {
+    // Isotropic stiffness through the scalar shape gradients: each shape
+    // function φ_i = N_i e_{c_i} of the primitive element has one nonzero
+    // component, so
+    //   ε(φ_i) : C ε(φ_j) = λ ∂_{c_i}N_i ∂_{c_j}N_j
+    //                      + μ (∂_{c_j}N_i ∂_{c_i}N_j + δ_{c_i c_j} ∇N_i·∇N_j).
+    const FiniteElement<dim> &fe = fe_values.get_fe();
+    const unsigned int        n  = fe_values.dofs_per_cell;
+    std::vector<unsigned int> component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe.system_to_component_index(i).first % dim;
+    const double                lambda = moduli.lambda_in_plane;
+    const double                mu     = moduli.mu;
+    std::vector<Tensor<1, dim>> grad(n);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          grad[i] = fe_values.shape_grad(i, q);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int   ci = component[i];
+            const Tensor<1, dim> gi = grad[i] * JxW;
+            for (unsigned int j = 0; j <= i; ++j)
+              {
+                const unsigned int cj = component[j];
+                double             value =
+                  lambda * gi[ci] * grad[j][cj] + mu * gi[cj] * grad[j][ci];
+                if (ci == cj)
+                  value += mu * (gi * grad[j]);
+                cell_matrix(i, j) += value;
+              }
+          }
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        cell_matrix(i, j) = cell_matrix(j, i);
   }
 
   template class ElasticAssembler<2>;

@@ -3,6 +3,13 @@
 #include <lithostress/loads/boundary_traction.h>
 #include <lithostress/reference_solutions/reference_solution.h>
 
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_q.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
 namespace lithostress
 {
   template <int dim>
@@ -35,6 +42,19 @@ namespace lithostress
                           "",
                           Patterns::Anything(),
                           "Constants for the expressions: name=value, ...");
+        prm.declare_entry("Resultant force",
+                          "",
+                          Patterns::Anything(),
+                          "Set the traction by force instead: the total "
+                          "force `F_x, F_y` [N per m out of plane] on this "
+                          "part, spread by the Resultant profile. Empty = "
+                          "use the normal and shear tractions.");
+        prm.declare_entry("Resultant profile",
+                          "1",
+                          Patterns::Anything(),
+                          "Weight w(x, y) >= 0 [-] by which the resultant is "
+                          "spread: t = F w / (integral of w over the part); "
+                          "1 = uniform.");
         prm.declare_entry("Use reference solution",
                           "false",
                           Patterns::Bool(),
@@ -59,8 +79,32 @@ namespace lithostress
         Part              part;
         part.id = model.boundary_id(name, "Loads/Tractions/Boundary parts");
         prm.enter_subsection(name);
+        part.name                   = name;
         part.from_reference         = prm.get_bool("Use reference solution");
         const std::string constants = prm.get("Constants");
+        const auto        resultant = split_list(prm.get("Resultant force"));
+        if (!resultant.empty())
+          {
+            if (resultant.size() != dim)
+              throw_input_error(where + "Resultant force",
+                                "needs " + std::to_string(dim) +
+                                  " components F_x, F_y [N/m]");
+            part.by_resultant = true;
+            for (unsigned int d = 0; d < dim; ++d)
+              part.resultant[d] =
+                parse_number(resultant[d], where + "Resultant force");
+            part.profile = std::make_unique<ParsedExpression<dim>>(
+              prm.get("Resultant profile"),
+              constants,
+              where + "Resultant profile");
+            if (Utilities::trim(prm.get("Normal traction")) != "0" ||
+                Utilities::trim(prm.get("Shear traction")) != "0" ||
+                part.from_reference)
+              throw_input_error(where + "Resultant force",
+                                "a part is loaded either by a resultant or "
+                                "by normal/shear tractions (or the "
+                                "reference solution), not both");
+          }
         part.normal =
           std::make_unique<ParsedExpression<dim>>(prm.get("Normal traction"),
                                                   constants,
@@ -100,6 +144,9 @@ namespace lithostress
         {
           if (part.from_reference)
             return reference->stress(p) * n;
+          if (part.by_resultant)
+            return part.resultant *
+                   (part.profile->value(p) / part.profile_integral);
           Tensor<1, dim> s;
           s[0] = n[1];
           s[1] = -n[0];
@@ -126,6 +173,82 @@ namespace lithostress
         for (const unsigned int i : fe_face_values.dof_indices())
           cell_rhs(i) += fe_face_values[displacement].value(i, q) * t;
       }
+  }
+
+  template <int dim>
+  void
+  BoundaryTraction<dim>::prepare_for_mesh(
+    const Triangulation<dim>  &tria,
+    const Mapping<dim>        &mapping,
+    const Quadrature<dim - 1> &face_quadrature)
+  {
+    const FE_Q<dim>   fe(1);
+    FEFaceValues<dim> face_values(mapping,
+                                  fe,
+                                  face_quadrature,
+                                  update_quadrature_points | update_JxW_values);
+    const MPI_Comm    communicator = tria.get_communicator();
+    for (Part &part : parts)
+      if (part.by_resultant)
+        {
+          double integral = 0;
+          // Collected first and checked on every rank, so that no rank
+          // leaves the collective sum below alone.
+          double lowest = 0;
+          for (const auto &cell : tria.active_cell_iterators())
+            if (cell->is_locally_owned())
+              for (const unsigned int f : cell->face_indices())
+                if (cell->face(f)->at_boundary() &&
+                    cell->face(f)->boundary_id() == part.id)
+                  {
+                    face_values.reinit(cell, f);
+                    for (const unsigned int q :
+                         face_values.quadrature_point_indices())
+                      {
+                        const double w =
+                          part.profile->value(face_values.quadrature_point(q));
+                        if (!(w >= 0))
+                          lowest = std::isnan(w)
+                                     ? -std::numeric_limits<double>::infinity()
+                                     : std::min(lowest, w);
+                        integral += w * face_values.JxW(q);
+                      }
+                  }
+          lowest = Utilities::MPI::min(lowest, communicator);
+          if (lowest < 0 || std::isnan(lowest))
+            throw_input_error("Loads/Tractions/" + part.name +
+                                "/Resultant profile",
+                              "is negative (" + std::to_string(lowest) +
+                                ") on the part");
+          part.profile_integral = Utilities::MPI::sum(integral, communicator);
+          if (!(part.profile_integral > 0))
+            throw_input_error("Loads/Tractions/" + part.name +
+                                "/Resultant profile",
+                              "integrates to zero over the part: the "
+                              "resultant cannot be spread");
+        }
+  }
+
+  template <int dim>
+  std::string
+  BoundaryTraction<dim>::description() const
+  {
+    std::ostringstream out;
+    out << "tractions on";
+    for (const Part &part : parts)
+      {
+        out << " " << part.name << " (";
+        if (part.from_reference)
+          out << "reference solution";
+        else if (part.by_resultant)
+          out << "resultant " << part.resultant << " N/m, profile "
+              << part.profile->text();
+        else
+          out << "normal " << part.normal->text() << " Pa, shear "
+              << part.shear->text() << " Pa";
+        out << ")";
+      }
+    return out.str();
   }
 
   template class BoundaryTraction<2>;

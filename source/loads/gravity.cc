@@ -48,5 +48,13 @@ namespace lithostress
       }
   }
 
+  template <int dim>
+  std::string
+  Gravity<dim>::description() const
+  {
+    return "gravity: body force -rho g in y, g = " +
+           std::to_string(acceleration) + " m/s^2";
+  }
+
   template class Gravity<2>;
 } // namespace lithostress

@@ -35,6 +35,7 @@ namespace lithostress
   {
     const std::string where = "Loads/Isostatic restoring force/";
     parts.clear();
+    this->names.clear();
     prm.enter_subsection("Isostatic restoring force");
     const auto   names     = split_list(prm.get("Boundary parts"));
     const auto   densities = split_list(prm.get("Fluid densities"));
@@ -52,6 +53,8 @@ namespace lithostress
           throw_input_error(where + "Fluid densities",
                             "the density of the fluid on <" + names[i] +
                               "> must be positive, got " + densities[i]);
+        this->names.push_back(names[i] + " (rho_f = " + densities[i] +
+                              " kg/m^3)");
         parts.emplace_back(model.boundary_id(names[i],
                                              where + "Boundary parts"),
                            rho * g);
@@ -100,6 +103,16 @@ namespace lithostress
             for (unsigned int j = 0; j < n; ++j)
               cell_matrix(i, j) += w * phi_y[i] * phi_y[j];
       }
+  }
+
+  template <int dim>
+  std::string
+  IsostaticRestoringForce<dim>::description() const
+  {
+    std::string text = "isostatic restoring force rho_f g u_y on";
+    for (const std::string &name : names)
+      text += " " + name;
+    return text;
   }
 
   template class IsostaticRestoringForce<2>;

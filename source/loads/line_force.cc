@@ -4,6 +4,8 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/loads/line_force.h>
 
+#include <sstream>
+
 namespace lithostress
 {
   template <int dim>
@@ -104,6 +106,18 @@ namespace lithostress
           }
         constraints.distribute_local_to_global(values, dofs, rhs);
       }
+  }
+
+  template <int dim>
+  std::string
+  LineForce<dim>::description() const
+  {
+    std::ostringstream out;
+    out << "line forces [N/m] at the nearest vertex:";
+    for (unsigned int k = 0; k < points.size(); ++k)
+      out << (k == 0 ? " " : "; ") << forces[k] << " at (" << points[k]
+          << ") m";
+    return out.str();
   }
 
   template class LineForce<2>;

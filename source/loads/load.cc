@@ -66,6 +66,24 @@ namespace lithostress
   }
 
   template <int dim>
+  void
+  Load<dim>::prepare_for_mesh(const Triangulation<dim> &,
+                              const Mapping<dim> &,
+                              const Quadrature<dim - 1> &)
+  {
+  }
+
+  template <int dim>
+  void
+  Load<dim>::add_initial_stress(const Point<dim> &,
+                                const Material &,
+                                const ElasticModuli<dim> &,
+                                SymmetricTensor<2, dim> &,
+                                double &) const
+  {
+  }
+
+  template <int dim>
   bool
   point_in_mesh(const Triangulation<dim> &tria,
                 const Mapping<dim>       &mapping,

@@ -1,8 +1,11 @@
+#include <lithostress/base/input_error.h>
 #include <lithostress/loads/boundary_traction.h>
+#include <lithostress/loads/density_stripping.h>
 #include <lithostress/loads/gravity.h>
 #include <lithostress/loads/isostatic_restoring_force.h>
 #include <lithostress/loads/line_force.h>
 #include <lithostress/loads/load_collection.h>
+#include <lithostress/loads/thermal_strain.h>
 
 namespace lithostress
 {
@@ -13,6 +16,8 @@ namespace lithostress
   {
     prm.enter_subsection("Loads");
     Gravity<dim>::declare_parameters(prm);
+    DensityStripping<dim>::declare_parameters(prm);
+    ThermalStrain<dim>::declare_parameters(prm);
     BoundaryTraction<dim>::declare_parameters(prm, first_pass);
     IsostaticRestoringForce<dim>::declare_parameters(prm);
     LineForce<dim>::declare_parameters(prm);
@@ -26,9 +31,22 @@ namespace lithostress
   {
     active.clear();
     prm.enter_subsection("Loads");
-    auto gravity = std::make_unique<Gravity<dim>>();
-    if (gravity->parse_parameters(prm))
+    auto       gravity      = std::make_unique<Gravity<dim>>();
+    const bool with_gravity = gravity->parse_parameters(prm);
+    if (with_gravity)
       active.push_back(std::move(gravity));
+    auto stripping = std::make_unique<DensityStripping<dim>>();
+    stripped       = stripping->parse_parameters(prm, model);
+    if (stripped && with_gravity)
+      throw_input_error("Loads/Density stripping/Reference column",
+                        "cannot be combined with Loads/Gravity/Enabled = "
+                        "true: the stripped body force replaces gravity");
+    if (stripped)
+      active.push_back(std::move(stripping));
+    body_force_absent = !with_gravity && !stripped;
+    auto thermal      = std::make_unique<ThermalStrain<dim>>();
+    if (thermal->parse_parameters(prm))
+      active.push_back(std::move(thermal));
     auto traction = std::make_unique<BoundaryTraction<dim>>();
     traction->parse_parameters(prm, model);
     if (!traction->empty())

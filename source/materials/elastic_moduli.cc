@@ -51,6 +51,18 @@ namespace lithostress
     return lambda_3d * trace(strain);
   }
 
+  template <int dim>
+  std::pair<double, double>
+  ElasticModuli<dim>::isotropic_initial_strain_stress(
+    const double initial_strain) const
+  {
+    const double bulk3 = 3.0 * lambda_3d + 2.0 * mu; // 3K
+    if (plane_state == PlaneState::plane_stress && dim == 2)
+      // E/(1 − ν) = 2(λ* + μ) = 2μ(3λ + 2μ)/(λ + 2μ).
+      return {-2.0 * mu * bulk3 / (lambda_3d + 2.0 * mu) * initial_strain, 0.0};
+    return {-bulk3 * initial_strain, -bulk3 * initial_strain};
+  }
+
   template class ElasticModuli<2>;
   template class ElasticModuli<3>;
 } // namespace lithostress

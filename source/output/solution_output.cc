@@ -47,15 +47,13 @@ namespace lithostress
                              const unsigned int                   cycle,
                              const DoFHandler<dim>               &dof_handler,
                              const FiniteElementSpace<dim>       &fe_space,
-                             const MaterialLibrary               &materials,
-                             const PlaneState                     plane_state,
+                             const StressModel<dim>              &stress_model,
                              const GriffithFailure               &griffith,
                              const TrilinosWrappers::MPI::Vector &solution)
   {
     if (!enabled)
       return;
-    const StressPostprocessor<dim> postprocessor(materials,
-                                                 plane_state,
+    const StressPostprocessor<dim> postprocessor(stress_model,
                                                  fe_space.n_fields(),
                                                  griffith);
     DataOut<dim>                   data_out;

@@ -9,8 +9,7 @@ namespace lithostress
   ErrorNorms
   compute_error_norms(const DoFHandler<dim>               &dof_handler,
                       const FiniteElementSpace<dim>       &fe_space,
-                      const MaterialLibrary               &materials,
-                      const PlaneState                     plane_state,
+                      const StressModel<dim>              &stress_model,
                       const TrilinosWrappers::MPI::Vector &solution,
                       const ReferenceSolution<dim>        &reference)
   {
@@ -35,9 +34,8 @@ namespace lithostress
           grad_h.resize(n_q);
           fe_values[u].get_function_values(solution, u_h);
           fe_values[u].get_function_gradients(solution, grad_h);
-          const ElasticModuli<dim>      moduli(materials(cell->material_id()),
-                                          plane_state);
-          const SymmetricTensor<4, dim> S = moduli.compliance();
+          const SymmetricTensor<4, dim> S =
+            stress_model.moduli(cell->material_id()).compliance();
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const Point<dim>             &p   = fe_values.quadrature_point(q);
@@ -45,8 +43,9 @@ namespace lithostress
               const Tensor<1, dim>          u_exact = reference.displacement(p);
               const SymmetricTensor<2, dim> s_exact = reference.stress(p);
               const SymmetricTensor<2, dim> strain_h = symmetrize(grad_h[q]);
-              const SymmetricTensor<2, dim> s_h      = moduli.stress(strain_h);
-              const SymmetricTensor<2, dim> ds       = s_h - s_exact;
+              const SymmetricTensor<2, dim> s_h =
+                stress_model.stress(cell->material_id(), p, strain_h).in_plane;
+              const SymmetricTensor<2, dim> ds = s_h - s_exact;
               e[0] += (u_h[q] - u_exact).norm_square() * JxW;
               e[1] += (ds * (S * ds)) * JxW;
               e[2] += ds.norm() * ds.norm() * JxW;
@@ -73,8 +72,7 @@ namespace lithostress
   template ErrorNorms
   compute_error_norms<2>(const DoFHandler<2> &,
                          const FiniteElementSpace<2> &,
-                         const MaterialLibrary &,
-                         const PlaneState,
+                         const StressModel<2> &,
                          const TrilinosWrappers::MPI::Vector &,
                          const ReferenceSolution<2> &);
 } // namespace lithostress

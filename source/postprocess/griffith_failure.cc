@@ -54,15 +54,37 @@ namespace lithostress
                       "cracks, > 0. FAIL in the thesis listing uses 1.0; the "
                       "thesis text quotes 0.1, which with sigma_c/T = -10 "
                       "makes the failure envelope discontinuous.");
+    prm.declare_entry(
+      "Lithostatic pressure",
+      "automatic",
+      Patterns::Selection("automatic|added|not added"),
+      "Whether the lithostatic stress -rho g depth of each point's own "
+      "material is added to the principal stresses before the test, as FAIL "
+      "does. automatic = added when the model has no full body force "
+      "(gravity off, or densities stripped), since its stresses then lack "
+      "the overburden.");
+    prm.declare_entry("Depth origin",
+                      "0",
+                      Patterns::Double(),
+                      "y [length unit] of zero depth for the lithostatic "
+                      "pressure; depth = max(0, origin - y).");
+    prm.declare_entry("Gravity",
+                      "9.81",
+                      Patterns::Double(0),
+                      "g [m/s^2] of the lithostatic pressure.");
     prm.leave_subsection();
   }
 
   void
-  GriffithFailure::parse_parameters(ParameterHandler &prm)
+  GriffithFailure::parse_parameters(ParameterHandler &prm,
+                                    const double      length_scale)
   {
     prm.enter_subsection("Griffith failure");
     const double new_ratio    = prm.get_double("Crack closure stress ratio");
     const double new_friction = prm.get_double("Crack friction");
+    lithostatic_choice        = prm.get("Lithostatic pressure");
+    depth_origin              = prm.get_double("Depth origin") * length_scale;
+    gravity                   = prm.get_double("Gravity");
     prm.leave_subsection();
 
     if (!(new_ratio < 0) || !std::isfinite(new_ratio))
@@ -90,6 +112,22 @@ namespace lithostress
 
     ratio    = new_ratio;
     friction = new_friction;
+  }
+
+  void
+  GriffithFailure::resolve_lithostatic_pressure(const bool without_body_force)
+  {
+    add_lithostatic = lithostatic_choice == "added" ||
+                      (lithostatic_choice == "automatic" && without_body_force);
+  }
+
+  double
+  GriffithFailure::lithostatic_stress(const double density,
+                                      const double y) const
+  {
+    if (!add_lithostatic)
+      return 0.0;
+    return -density * gravity * std::max(0.0, depth_origin - y);
   }
 
   std::array<double, 3>

@@ -6,21 +6,36 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/postprocess/point_values.h>
 
+#include <cmath>
+
 namespace lithostress
 {
   template <int dim>
   std::vector<PointValue<dim>>
   evaluate_at_points(const DoFHandler<dim>               &dof_handler,
                      const FiniteElementSpace<dim>       &fe_space,
-                     const MaterialLibrary               &materials,
-                     const PlaneState                     plane_state,
+                     const StressModel<dim>              &stress_model,
                      const TrilinosWrappers::MPI::Vector &solution,
-                     const std::vector<Point<dim>>       &points)
+                     const std::vector<Point<dim>>       &points,
+                     const bool                           allow_outside)
   {
+    std::vector<bool> inside(points.size(), true);
     // u, σ (dim × dim) and σzz per point; only the winning rank fills them.
-    const unsigned int  n_values = dim + dim * dim + 1;
+    const unsigned int  n_values = dim + dim * dim + 2;
     std::vector<double> local(points.size() * n_values, 0.0);
     const MPI_Comm      comm = dof_handler.get_communicator();
+    // The owned cells with their bounding boxes, widened by a tenth of the
+    // diameter for curved cells, in iteration order.
+    std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator,
+                          BoundingBox<dim>>>
+      owned_cells;
+    for (const auto &c : dof_handler.active_cell_iterators())
+      if (c->is_locally_owned())
+        {
+          auto box = c->bounding_box();
+          box.extend(0.1 * c->diameter());
+          owned_cells.emplace_back(c, box);
+        }
     for (unsigned int k = 0; k < points.size(); ++k)
       {
         // The first owned cell (in CellId order) that contains the point;
@@ -29,34 +44,26 @@ namespace lithostress
         typename DoFHandler<dim>::active_cell_iterator cell;
         Point<dim>                                     unit;
         bool                                           found = false;
-        for (const auto &c : dof_handler.active_cell_iterators())
-          if (c->is_locally_owned())
-            {
-              const auto   box    = c->bounding_box();
-              const double margin = 0.1 * c->diameter();
-              bool         near   = true;
-              for (unsigned int d = 0; d < dim; ++d)
-                near = near && points[k][d] >= box.lower_bound(d) - margin &&
-                       points[k][d] <= box.upper_bound(d) + margin;
-              if (!near)
+        for (const auto &[c, box] : owned_cells)
+          {
+            if (!box.point_inside(points[k]))
+              continue;
+            try
+              {
+                unit =
+                  fe_space.mapping().transform_real_to_unit_cell(c, points[k]);
+              }
+            catch (const typename Mapping<dim>::ExcTransformationFailed &)
+              {
                 continue;
-              try
-                {
-                  unit =
-                    fe_space.mapping().transform_real_to_unit_cell(c,
-                                                                   points[k]);
-                }
-              catch (const typename Mapping<dim>::ExcTransformationFailed &)
-                {
-                  continue;
-                }
-              if (GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-10))
-                {
-                  cell  = c;
-                  found = true;
-                  break;
-                }
-            }
+              }
+            if (GeometryInfo<dim>::is_inside_unit_cell(unit, 1e-10))
+              {
+                cell  = c;
+                found = true;
+                break;
+              }
+          }
         const std::vector<std::string> candidates = Utilities::MPI::all_gather(
           comm, found ? cell->id().to_string() : std::string());
         int winner = -1;
@@ -65,6 +72,11 @@ namespace lithostress
               (winner < 0 ||
                CellId(candidates[r]) < CellId(candidates[winner])))
             winner = r;
+        if (winner < 0 && allow_outside)
+          {
+            inside[k] = false;
+            continue;
+          }
         if (winner < 0)
           throw InputError("the point (" + std::to_string(points[k][0]) + ", " +
                            std::to_string(points[k][1]) +
@@ -77,7 +89,8 @@ namespace lithostress
         FEValues<dim>         fe_values(fe_space.mapping(),
                                 fe,
                                 q,
-                                update_values | update_gradients);
+                                update_values | update_gradients |
+                                  update_quadrature_points);
         fe_values.reinit(cell);
         const auto u =
           fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
@@ -85,17 +98,18 @@ namespace lithostress
         std::vector<Tensor<2, dim>> gradient(1);
         fe_values[u].get_function_values(solution, value);
         fe_values[u].get_function_gradients(solution, gradient);
-        const ElasticModuli<dim>      moduli(materials(cell->material_id()),
-                                        plane_state);
-        const SymmetricTensor<2, dim> strain = symmetrize(gradient[0]);
-        const SymmetricTensor<2, dim> stress = moduli.stress(strain);
-        double                       *v      = &local[k * n_values];
+        const StressState<dim> stress =
+          stress_model.stress(cell->material_id(),
+                              fe_values.quadrature_point(0),
+                              symmetrize(gradient[0]));
+        double *v = &local[k * n_values];
         for (unsigned int d = 0; d < dim; ++d)
           v[d] = value[0][d];
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = 0; b < dim; ++b)
-            v[dim + a * dim + b] = stress[a][b];
-        v[dim + dim * dim] = moduli.sigma_zz(strain);
+            v[dim + a * dim + b] = stress.in_plane[a][b];
+        v[dim + dim * dim]     = stress.zz;
+        v[dim + dim * dim + 1] = cell->material_id();
       }
     std::vector<double> global(local.size());
     Utilities::MPI::sum(local, comm, global);
@@ -103,14 +117,17 @@ namespace lithostress
     std::vector<PointValue<dim>> result(points.size());
     for (unsigned int k = 0; k < points.size(); ++k)
       {
-        const double *v = &global[k * n_values];
-        result[k].point = points[k];
+        const double *v  = &global[k * n_values];
+        result[k].point  = points[k];
+        result[k].inside = inside[k];
         for (unsigned int d = 0; d < dim; ++d)
           result[k].displacement[d] = v[d];
         for (unsigned int a = 0; a < dim; ++a)
           for (unsigned int b = a; b < dim; ++b)
             result[k].stress[a][b] = v[dim + a * dim + b];
         result[k].sigma_zz = v[dim + dim * dim];
+        result[k].material_id =
+          static_cast<types::material_id>(std::lround(v[dim + dim * dim + 1]));
       }
     return result;
   }
@@ -118,8 +135,8 @@ namespace lithostress
   template std::vector<PointValue<2>>
   evaluate_at_points<2>(const DoFHandler<2> &,
                         const FiniteElementSpace<2> &,
-                        const MaterialLibrary &,
-                        const PlaneState,
+                        const StressModel<2> &,
                         const TrilinosWrappers::MPI::Vector &,
-                        const std::vector<Point<2>> &);
+                        const std::vector<Point<2>> &,
+                        const bool);
 } // namespace lithostress

@@ -6,12 +6,10 @@ namespace lithostress
 {
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(
-    const MaterialLibrary &materials,
-    const PlaneState       plane_state,
-    const unsigned int     n_fields,
-    const GriffithFailure &griffith)
-      : materials(materials)
-      , plane_state(plane_state)
+    const StressModel<dim> &stress_model,
+    const unsigned int      n_fields,
+    const GriffithFailure  &griffith)
+      : stress_model(stress_model)
       , n_fields(n_fields)
       , griffith(griffith)
   {
@@ -60,7 +58,7 @@ namespace lithostress
   UpdateFlags
   StressPostprocessor<dim>::get_needed_update_flags() const
   {
-    return update_values | update_gradients;
+    return update_values | update_gradients | update_quadrature_points;
   }
 
   template <int dim>
@@ -69,9 +67,8 @@ namespace lithostress
     const DataPostprocessorInputs::Vector<dim> &inputs,
     std::vector<Vector<double>>                &computed) const
   {
-    const auto               cell     = inputs.template get_cell<dim>();
-    const Material          &material = materials(cell->material_id());
-    const ElasticModuli<dim> moduli(material, plane_state);
+    const auto      cell     = inputs.template get_cell<dim>();
+    const Material &material = stress_model.materials(cell->material_id());
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
         Tensor<1, dim> u;
@@ -82,33 +79,56 @@ namespace lithostress
               u[d] += inputs.solution_values[q][f * dim + d];
               grad[d] += inputs.solution_gradients[q][f * dim + d];
             }
-        const SymmetricTensor<2, dim> strain = symmetrize(grad);
-        const SymmetricTensor<2, dim> stress = moduli.stress(strain);
+        const Point<dim>      &p = inputs.evaluation_points[q];
+        const StressState<dim> s =
+          stress_model.stress(material.id, p, symmetrize(grad));
+        const StressAnalysis a = analyse_stress(s, material, p, griffith);
         for (unsigned int d = 0; d < dim; ++d)
           computed[q][d] = u[d];
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            computed[q][dim + a * dim + b] = stress[a][b];
-        const double sigma_zz     = moduli.sigma_zz(strain);
-        unsigned int k            = dim + dim * dim;
-        computed[q][k++]          = sigma_zz;
-        const PrincipalStresses p = principal_stresses(stress);
-        computed[q][k++]          = p.sigma_1;
-        computed[q][k++]          = p.sigma_2;
-        computed[q][k++]          = std::cos(p.angle_1);
-        computed[q][k++]          = std::sin(p.angle_1);
-        const double mean = (stress[0][0] + stress[1][1] + sigma_zz) / 3;
-        computed[q][k++]  = stress[0][0] - mean;
-        computed[q][k++]  = stress[1][1] - mean;
-        computed[q][k++]  = sigma_zz - mean;
-        computed[q][k++]  = stress[0][1];
-        const GriffithFailure::Result g =
-          griffith.evaluate(p.sigma_1, p.sigma_2, material.tensile_strength);
-        const bool tested = g.regime != GriffithFailure::Regime::not_tested;
-        computed[q][k++]  = tested ? g.degree_of_failure : 1.0;
-        computed[q][k++]  = tested ? static_cast<double>(g.regime) : -1.0;
-        computed[q][k++]  = tested ? g.fracture_angle * 180 / numbers::PI : 0.0;
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = 0; j < dim; ++j)
+            computed[q][dim + i * dim + j] = s.in_plane[i][j];
+        unsigned int k   = dim + dim * dim;
+        computed[q][k++] = s.zz;
+        computed[q][k++] = a.principal.sigma_1;
+        computed[q][k++] = a.principal.sigma_2;
+        computed[q][k++] = std::cos(a.principal.angle_1);
+        computed[q][k++] = std::sin(a.principal.angle_1);
+        computed[q][k++] = a.deviatoric_xx;
+        computed[q][k++] = a.deviatoric_yy;
+        computed[q][k++] = a.deviatoric_zz;
+        computed[q][k++] = a.deviatoric_xy;
+        computed[q][k++] = a.degree_of_failure;
+        computed[q][k++] = a.regime;
+        computed[q][k++] = a.fracture_angle;
       }
+  }
+
+  template <int dim>
+  StressAnalysis
+  analyse_stress(const StressState<dim> &s,
+                 const Material         &material,
+                 const Point<dim>       &p,
+                 const GriffithFailure  &griffith)
+  {
+    StressAnalysis a;
+    a.principal       = principal_stresses(s.in_plane);
+    const double mean = (s.in_plane[0][0] + s.in_plane[1][1] + s.zz) / 3;
+    a.deviatoric_xx   = s.in_plane[0][0] - mean;
+    a.deviatoric_yy   = s.in_plane[1][1] - mean;
+    a.deviatoric_zz   = s.zz - mean;
+    a.deviatoric_xy   = s.in_plane[0][1];
+    const double lithostatic =
+      griffith.lithostatic_stress(material.density, p[dim - 1]);
+    const GriffithFailure::Result g =
+      griffith.evaluate(a.principal.sigma_1 + lithostatic,
+                        a.principal.sigma_2 + lithostatic,
+                        material.tensile_strength);
+    const bool tested   = g.regime != GriffithFailure::Regime::not_tested;
+    a.degree_of_failure = tested ? g.degree_of_failure : 1.0;
+    a.regime            = tested ? static_cast<double>(g.regime) : -1.0;
+    a.fracture_angle    = tested ? g.fracture_angle * 180 / numbers::PI : 0.0;
+    return a;
   }
 
   PrincipalStresses
@@ -126,4 +146,9 @@ namespace lithostress
   }
 
   template class StressPostprocessor<2>;
+  template StressAnalysis
+  analyse_stress<2>(const StressState<2> &,
+                    const Material &,
+                    const Point<2> &,
+                    const GriffithFailure &);
 } // namespace lithostress

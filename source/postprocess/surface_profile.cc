@@ -88,10 +88,10 @@ namespace lithostress
     const std::vector<std::array<double, 1 + 2 * dim>> &profile)
   {
     std::ofstream out(filename);
-    out << "x,y,u_x,u_y\n"
+    out << "x,u_x,u_y,y\n"
         << std::setprecision(std::numeric_limits<double>::max_digits10);
     for (const auto &row : profile)
-      out << row[0] << ',' << row[1] << ',' << row[2] << ',' << row[3] << '\n';
+      out << row[0] << ',' << row[2] << ',' << row[3] << ',' << row[1] << '\n';
   }
 
   template std::vector<std::array<double, 5>>

@@ -98,8 +98,7 @@ namespace lithostress
   MeshRefinement<dim>::indicators(
     const DoFHandler<dim>               &dof_handler,
     const FiniteElementSpace<dim>       &fe_space,
-    const MaterialLibrary               &materials,
-    const PlaneState                     plane_state,
+    const StressModel<dim>              &stress_model,
     const TrilinosWrappers::MPI::Vector &solution) const
   {
     const auto   &tria = dof_handler.get_triangulation();
@@ -143,7 +142,7 @@ namespace lithostress
     hp::FEValues<dim> at_nodes(fe_space.mapping_collection(),
                                fe_space.fe_collection(),
                                node_q,
-                               update_gradients);
+                               update_gradients | update_quadrature_points);
     auto              stress_component = [](const SymmetricTensor<2, dim> &s,
                                const unsigned int             c) {
       if (c < dim)
@@ -165,14 +164,16 @@ namespace lithostress
               fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
             grads.resize(fv.n_quadrature_points);
             fv[u].get_function_gradients(solution, grads);
-            const ElasticModuli<dim> moduli(materials(cell->material_id()),
-                                            plane_state);
             stress_cell->get_dof_indices(stress_indices);
             for (unsigned int i = 0; i < stress_fe.n_dofs_per_cell(); ++i)
               {
                 const auto ci = stress_fe.system_to_component_index(i);
                 const SymmetricTensor<2, dim> s =
-                  moduli.stress(symmetrize(grads[ci.second]));
+                  stress_model
+                    .stress(cell->material_id(),
+                            fv.quadrature_point(ci.second),
+                            symmetrize(grads[ci.second]))
+                    .in_plane;
                 sum(stress_indices[i]) += stress_component(s, ci.first);
                 weight(stress_indices[i]) += 1.0;
               }
@@ -195,7 +196,8 @@ namespace lithostress
     hp::FEValues<dim>           hp_fe_values(fe_space.mapping_collection(),
                                    fe_space.fe_collection(),
                                    fe_space.cell_quadrature(),
-                                   update_gradients | update_JxW_values);
+                                   update_gradients | update_quadrature_points |
+                                     update_JxW_values);
     const QGauss<dim>           quadrature(fe_space.degree() + 1);
     FEValues<dim>               stress_values(fe_space.mapping(),
                                 stress_fe,
@@ -217,13 +219,15 @@ namespace lithostress
             fv[u].get_function_gradients(solution, grads);
             stress_values.reinit(stress_cell);
             stress_values.get_function_values(recovered, s_star);
-            const ElasticModuli<dim> moduli(materials(cell->material_id()),
-                                            plane_state);
-            double                   e2 = 0;
+            double e2 = 0;
             for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
               {
                 const SymmetricTensor<2, dim> s =
-                  moduli.stress(symmetrize(grads[q]));
+                  stress_model
+                    .stress(cell->material_id(),
+                            fv.quadrature_point(q),
+                            symmetrize(grads[q]))
+                    .in_plane;
                 for (unsigned int c = 0; c < n_stress; ++c)
                   {
                     const double d = stress_component(s, c) - s_star[q](c);
@@ -320,8 +324,7 @@ namespace lithostress
     parallel::distributed::Triangulation<dim> &tria,
     const DoFHandler<dim>                     &dof_handler,
     const FiniteElementSpace<dim>             &fe_space,
-    const MaterialLibrary                     &materials,
-    const PlaneState                           plane_state,
+    const StressModel<dim>                    &stress_model,
     const TrilinosWrappers::MPI::Vector       &solution) const
   {
     if (strategy == Strategy::global)
@@ -334,7 +337,7 @@ namespace lithostress
     else
       {
         const Vector<float> eta =
-          indicators(dof_handler, fe_space, materials, plane_state, solution);
+          indicators(dof_handler, fe_space, stress_model, solution);
         if (marking == Marking::fraction_of_cells)
           parallel::distributed::GridRefinement::
             refine_and_coarsen_fixed_number(tria,

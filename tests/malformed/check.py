@@ -24,6 +24,16 @@ expected = {
     "point_outside_body": "Points",
     "unknown_geometry": "sphere",
     "unbalanced_end": "subsection",
+    "reference_column_gap": "Reference column",
+    "reference_column_too_short": "Reference column",
+    "stripping_with_gravity": "Gravity",
+    "temperature_change_unparsable": "Temperature change",
+    "thermal_coefficient_type_missing": "Coefficient type",
+    "negative_fluid_density": "Fluid densities",
+    "line_force_outside_body": "Line forces",
+    "resultant_and_traction": "Resultant force",
+    "resultant_one_component": "Resultant force",
+    "profile_line_outside_body": "Stress-depth profiles",
 }
 files = sorted(f[:-4] for f in os.listdir(HERE) if f.endswith(".prm"))
 check(len(files) >= 10 and set(files) == set(expected), "%d malformed inputs, each with an expected message" % len(files))

@@ -8,7 +8,10 @@
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/loads/load.h>
 
+#include <array>
 #include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace lithostress
@@ -35,6 +38,15 @@ namespace lithostress
           AffineConstraints<double>     &constraints,
           const double                   time = 0) const;
 
+    /**
+     * The degrees of freedom each part prescribes, per component, by part
+     * name; a degree of freedom on two parts (a corner) belongs to the first
+     * one named. Used to sum reaction forces.
+     */
+    std::vector<std::pair<std::string, std::array<IndexSet, dim>>>
+    constrained_dofs(const DoFHandler<dim>         &dof_handler,
+                     const FiniteElementSpace<dim> &fe_space) const;
+
     /** Whether part @p id has a prescribed component. */
     bool
     constrains(const types::boundary_id id) const;
@@ -42,6 +54,7 @@ namespace lithostress
   private:
     struct Part
     {
+      std::string                                             name;
       types::boundary_id                                      id;
       std::array<std::unique_ptr<ParsedExpression<dim>>, dim> component;
       std::array<bool, dim>                                   from_reference;

@@ -34,6 +34,12 @@ namespace lithostress
              LinearSystem<dim>     &system,
              const bool             with_matrix = true) const;
 
+    /** Add the cell stiffness ∫ ε(φ_i) : C ε(φ_j) dx to @p cell_matrix. */
+    static void
+    add_cell_stiffness(const FEValues<dim>      &fe_values,
+                       const ElasticModuli<dim> &moduli,
+                       FullMatrix<double>       &cell_matrix);
+
     /** The moduli of material @p id in the model's plane state. */
     ElasticModuli<dim>
     moduli(const types::material_id id) const;

@@ -16,6 +16,11 @@ namespace lithostress
    * component τ along s = (n_y, −n_x) (the outward normal turned clockwise),
    * each a function of position, or the traction σ_exact·n of the reference
    * solution. Weak form ∫ (σ_n n + τ s)·v ds.
+   *
+   * A traction can instead be set by force, as the thesis sets slab pull
+   * (§7.4): a resultant F [N/m] spread over the part by a profile w(x, y) ≥ 0,
+   * t = F w / ∫ w ds, so that ∫ t ds = F exactly (the integral is taken
+   * with the assembly's quadrature and mapping on every new mesh).
    */
   template <int dim>
   class BoundaryTraction : public Load<dim>
@@ -42,6 +47,15 @@ namespace lithostress
                        FullMatrix<double>               &cell_matrix,
                        Vector<double> &cell_rhs) const override;
 
+    /** Integrate the resultant profiles over the new mesh. */
+    void
+    prepare_for_mesh(const Triangulation<dim>  &tria,
+                     const Mapping<dim>        &mapping,
+                     const Quadrature<dim - 1> &face_quadrature) override;
+
+    std::string
+    description() const override;
+
     /** The traction vector on part @p id at @p p with outward normal @p n. */
     Tensor<1, dim>
     traction(const types::boundary_id id,
@@ -53,7 +67,13 @@ namespace lithostress
     {
       types::boundary_id                     id;
       bool                                   from_reference;
+      std::string                            name;
       std::unique_ptr<ParsedExpression<dim>> normal, shear;
+      /** Set by force: the resultant [N/m], its profile and ∫ w ds. */
+      bool                                   by_resultant = false;
+      Tensor<1, dim>                         resultant;
+      std::unique_ptr<ParsedExpression<dim>> profile;
+      double                                 profile_integral = 0;
     };
     std::vector<Part>             parts;
     const ReferenceSolution<dim> *reference = nullptr;

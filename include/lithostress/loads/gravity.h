@@ -27,6 +27,9 @@ namespace lithostress
                    FullMatrix<double>               &cell_matrix,
                    Vector<double>                   &cell_rhs) const override;
 
+    std::string
+    description() const override;
+
     /** g [m s⁻²]. */
     double acceleration = 9.81;
   };

@@ -48,8 +48,12 @@ namespace lithostress
     double
     stiffness(const types::boundary_id id) const;
 
+    std::string
+    description() const override;
+
   private:
     std::vector<std::pair<types::boundary_id, double>> parts;
+    std::vector<std::string>                           names;
   };
 } // namespace lithostress
 

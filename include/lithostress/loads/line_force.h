@@ -39,6 +39,9 @@ namespace lithostress
     check_against_mesh(const Triangulation<dim> &tria,
                        const Mapping<dim>       &mapping) const override;
 
+    std::string
+    description() const override;
+
   private:
     std::vector<Point<dim>>     points;
     std::vector<Tensor<1, dim>> forces;

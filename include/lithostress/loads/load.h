@@ -95,6 +95,43 @@ namespace lithostress
     check_against_mesh(const Triangulation<dim> &tria,
                        const Mapping<dim>       &mapping) const;
 
+    /**
+     * Prepare for a new mesh: loads that depend on integrals over the mesh
+     * (a traction spread to a prescribed resultant) compute them here.
+     * Called after every refinement, before assembly, on every rank.
+     */
+    virtual void
+    prepare_for_mesh(const Triangulation<dim>  &tria,
+                     const Mapping<dim>        &mapping,
+                     const Quadrature<dim - 1> &face_quadrature);
+
+    /**
+     * Whether the load carries an initial strain (SPEC §3.1: σ = C(ε − ε0)),
+     * so that the stress at a given strain depends on it.
+     */
+    virtual bool
+    has_initial_stress() const
+    {
+      return false;
+    }
+
+    /**
+     * Add the stress −C ε0 of this load's initial strain at @p p in a cell
+     * of @p material to the in-plane @p stress and to @p sigma_zz. Used by
+     * StressModel for every reported stress, and by the load itself for its
+     * right-hand side −∫ σ0 : ε(v) dx.
+     */
+    virtual void
+    add_initial_stress(const Point<dim>         &p,
+                       const Material           &material,
+                       const ElasticModuli<dim> &moduli,
+                       SymmetricTensor<2, dim>  &stress,
+                       double                   &sigma_zz) const;
+
+    /** A one-line description for the log (what acts where). */
+    virtual std::string
+    description() const = 0;
+
     /** Whether the load changes the stiffness matrix. */
     virtual bool
     changes_stiffness() const

@@ -33,8 +33,26 @@ namespace lithostress
     bool
     acts_on_boundary(const types::boundary_id id) const;
 
+    /** Whether densities are stripped (stresses relative to a reference
+     * column). */
+    bool
+    densities_stripped() const
+    {
+      return stripped;
+    }
+
+    /** Whether the model has no body force (neither gravity nor stripped
+     * densities). */
+    bool
+    without_body_force() const
+    {
+      return body_force_absent;
+    }
+
   private:
     std::vector<std::unique_ptr<Load<dim>>> active;
+    bool                                    stripped          = false;
+    bool                                    body_force_absent = true;
   };
 } // namespace lithostress
 

@@ -6,6 +6,7 @@
 #include <lithostress/materials/material.h>
 
 #include <string>
+#include <utility>
 
 namespace lithostress
 {
@@ -57,6 +58,15 @@ namespace lithostress
      * stress). */
     double
     sigma_zz(const SymmetricTensor<2, dim> &strain) const;
+
+    /**
+     * The stress of an isotropic 3-D initial strain ε0 I (thermal expansion,
+     * SPEC §3.2) when the total strain is zero: σ = −C ε0. Returns the in-plane
+     * diagonal value and σ_zz: −(3λ + 2μ) ε0 for both in plane strain (ε_zz =
+     * 0), −E/(1 − ν) ε0 and 0 in plane stress (σ_zz = 0, free expansion in z).
+     */
+    std::pair<double, double>
+    isotropic_initial_strain_stress(const double initial_strain) const;
 
     /** Effective in-plane Lamé λ (λ or λ*) and μ. */
     double lambda_in_plane, mu;

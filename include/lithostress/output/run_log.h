@@ -40,6 +40,13 @@ namespace lithostress
     RunLog &
     operator<<(std::ostream &(*manipulator)(std::ostream &));
 
+    /** Whether this is the rank that writes. */
+    bool
+    on_root() const
+    {
+      return is_root;
+    }
+
   private:
     void
     write(const std::string &text);

@@ -6,7 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <lithostress/discretization/finite_element_space.h>
-#include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/stress_model.h>
 #include <lithostress/postprocess/griffith_failure.h>
 
 #include <string>
@@ -39,8 +39,7 @@ namespace lithostress
           const unsigned int                   cycle,
           const DoFHandler<dim>               &dof_handler,
           const FiniteElementSpace<dim>       &fe_space,
-          const MaterialLibrary               &materials,
-          const PlaneState                     plane_state,
+          const StressModel<dim>              &stress_model,
           const GriffithFailure               &griffith,
           const TrilinosWrappers::MPI::Vector &solution);
 

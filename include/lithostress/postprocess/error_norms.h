@@ -5,7 +5,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <lithostress/discretization/finite_element_space.h>
-#include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/stress_model.h>
 #include <lithostress/reference_solutions/reference_solution.h>
 
 namespace lithostress
@@ -33,8 +33,7 @@ namespace lithostress
   ErrorNorms
   compute_error_norms(const DoFHandler<dim>               &dof_handler,
                       const FiniteElementSpace<dim>       &fe_space,
-                      const MaterialLibrary               &materials,
-                      const PlaneState                     plane_state,
+                      const StressModel<dim>              &stress_model,
                       const TrilinosWrappers::MPI::Vector &solution,
                       const ReferenceSolution<dim>        &reference);
 } // namespace lithostress

@@ -88,7 +88,31 @@ namespace lithostress
      * envelope).
      */
     void
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const double length_scale = 1.0);
+
+    /**
+     * Decide whether the lithostatic stress is added before the test
+     * (`Lithostatic pressure`): with `automatic`, when
+     * @p without_body_force — the model's stresses then lack the overburden
+     * (no gravity, or densities stripped), and FAIL adds it.
+     */
+    void
+    resolve_lithostatic_pressure(const bool without_body_force);
+
+    /** Whether the lithostatic stress is added. */
+    bool
+    adds_lithostatic_pressure() const
+    {
+      return add_lithostatic;
+    }
+
+    /**
+     * The lithostatic stress −ρ g max(0, y0 − y) [Pa] (compressive, tension
+     * positive) at height @p y [m] in a material of density @p density, to
+     * be added to σ1 and σ2 before evaluate(); 0 when not added.
+     */
+    double
+    lithostatic_stress(const double density, const double y) const;
 
     /**
      * Test the stress state with in-plane principal stresses @p sigma_1 and
@@ -126,6 +150,11 @@ namespace lithostress
     double ratio = -4.19;
     /** μF > 0. */
     double friction = 1.0;
+    /** `Lithostatic pressure` as given, and its resolution. */
+    std::string lithostatic_choice = "automatic";
+    bool        add_lithostatic    = false;
+    /** y of zero depth [m] and g [m s⁻²] of the lithostatic stress. */
+    double depth_origin = 0, gravity = 9.81;
   };
 
   /**

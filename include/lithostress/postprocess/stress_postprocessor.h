@@ -3,8 +3,8 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
-#include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/material.h>
+#include <lithostress/materials/stress_model.h>
 #include <lithostress/postprocess/griffith_failure.h>
 
 namespace lithostress
@@ -21,6 +21,33 @@ namespace lithostress
   principal_stresses(const SymmetricTensor<2, 2> &stress);
 
   /**
+   * What the stress analysis reports at a point (SPEC §3.6): principal
+   * stresses, the deviatoric stresses relative to the mean of the three
+   * principal stresses (thesis DEVST) and the modified Griffith test.
+   */
+  struct StressAnalysis
+  {
+    PrincipalStresses principal;
+    /** Deviatoric σ_xx, σ_yy, σ_zz, σ_xy. */
+    double deviatoric_xx, deviatoric_yy, deviatoric_zz, deviatoric_xy;
+    /** Griffith C (1 where not tested), regime (−1 not tested) and fracture
+     * angle [degrees]. */
+    double degree_of_failure, regime, fracture_angle;
+  };
+
+  /**
+   * Analyse the stress @p stress at @p p in @p material: the Griffith test
+   * is made on the principal stresses plus the lithostatic stress when
+   * @p griffith says so (FAIL).
+   */
+  template <int dim>
+  StressAnalysis
+  analyse_stress(const StressState<dim> &stress,
+                 const Material         &material,
+                 const Point<dim>       &p,
+                 const GriffithFailure  &griffith);
+
+  /**
    * Turns the finite element solution into the fields written for
    * ParaView: the displacement (the sum of all displacement fields, since
    * FE_Nothing fields are zero), the in-plane stress tensor, σ_zz, the
@@ -29,18 +56,17 @@ namespace lithostress
    * stresses (thesis DEVST), and the modified Griffith test of the
    * material's tensile strength (degree of failure C, regime 0–3 and the
    * fracture angle in degrees; where T = 0 the test is not made: regime −1, C =
-   * 1; SPEC §3.6 — the lithostatic pressure that FAIL adds without body forces
-   * is not added yet), tension positive, evaluated with the moduli of each
-   * cell's material.
+   * 1; SPEC §3.6, with the lithostatic pressure FAIL adds when the model has
+   * no full body force), tension positive, evaluated through the model's
+   * StressModel (each cell's material, initial strains included).
    */
   template <int dim>
   class StressPostprocessor : public DataPostprocessor<dim>
   {
   public:
-    StressPostprocessor(const MaterialLibrary &materials,
-                        const PlaneState       plane_state,
-                        const unsigned int     n_fields,
-                        const GriffithFailure &griffith);
+    StressPostprocessor(const StressModel<dim> &stress_model,
+                        const unsigned int      n_fields,
+                        const GriffithFailure  &griffith);
 
     void
     evaluate_vector_field(
@@ -57,10 +83,9 @@ namespace lithostress
     get_needed_update_flags() const override;
 
   private:
-    const MaterialLibrary &materials;
-    const PlaneState       plane_state;
-    const unsigned int     n_fields;
-    const GriffithFailure &griffith;
+    const StressModel<dim> &stress_model;
+    const unsigned int      n_fields;
+    const GriffithFailure  &griffith;
   };
 } // namespace lithostress
 

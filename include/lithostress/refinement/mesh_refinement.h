@@ -7,7 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <lithostress/discretization/finite_element_space.h>
-#include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/stress_model.h>
 
 namespace lithostress
 {
@@ -52,16 +52,14 @@ namespace lithostress
     refine(parallel::distributed::Triangulation<dim> &tria,
            const DoFHandler<dim>                     &dof_handler,
            const FiniteElementSpace<dim>             &fe_space,
-           const MaterialLibrary                     &materials,
-           const PlaneState                           plane_state,
+           const StressModel<dim>                    &stress_model,
            const TrilinosWrappers::MPI::Vector       &solution) const;
 
     /** The error indicator per active cell (zero on non-owned cells). */
     Vector<float>
     indicators(const DoFHandler<dim>               &dof_handler,
                const FiniteElementSpace<dim>       &fe_space,
-               const MaterialLibrary               &materials,
-               const PlaneState                     plane_state,
+               const StressModel<dim>              &stress_model,
                const TrilinosWrappers::MPI::Vector &solution) const;
 
     /** Dörfler marking of the cells carrying the refine fraction of Σ η². */

@@ -1,0 +1,66 @@
+#ifndef lithostress_loads_density_stripping_h
+#define lithostress_loads_density_stripping_h
+
+#include <lithostress/loads/load.h>
+
+#include <vector>
+
+namespace lithostress
+{
+  /**
+   * Density stripping (thesis §7.3, Bott & Dean 1972; SPEC §3.2): the body
+   * force −Δρ g ŷ of the density anomaly Δρ = ρ(material) − ρ_ref(depth)
+   * relative to a reference density–depth column, given piecewise constant
+   * by depth intervals. The stresses computed are then relative to those of
+   * the reference (undisturbed) lithosphere. Depth is measured downward from
+   * a given elevation (y = 0, sea level, by default). It replaces gravity:
+   * the two cannot be combined.
+   */
+  template <int dim>
+  class DensityStripping : public Load<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /** Returns whether a reference column is given. Throws InputError for a
+     * column with gaps, overlaps, unsorted or empty intervals, or negative
+     * densities. */
+    bool
+    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+
+    void
+    add_cell_terms(const FEValues<dim>              &fe_values,
+                   const FEValuesExtractors::Vector &displacement,
+                   const Material                   &material,
+                   const ElasticModuli<dim>         &moduli,
+                   FullMatrix<double>               &cell_matrix,
+                   Vector<double>                   &cell_rhs) const override;
+
+    /** Every vertex of the coarse mesh must lie within the column. */
+    void
+    check_against_mesh(const Triangulation<dim> &tria,
+                       const Mapping<dim>       &mapping) const override;
+
+    std::string
+    description() const override;
+
+    /** ρ_ref at @p p (the end intervals continue beyond the column, which
+     * check_against_mesh() allows only by a curved boundary's bulge). */
+    double
+    reference_density(const Point<dim> &p) const;
+
+    /** g [m s⁻²]. */
+    double acceleration = 9.81;
+
+  private:
+    /** Interval bottoms (depth, m, increasing) and densities; the first
+     * interval starts at column_top. */
+    double              column_top = 0;
+    std::vector<double> bottoms, densities;
+    /** y of depth zero [m]. */
+    double depth_origin = 0;
+    double length_scale = 1;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,170 @@
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/loads/density_stripping.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  DensityStripping<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Density stripping");
+    prm.declare_entry(
+      "Reference column",
+      "",
+      Patterns::Anything(),
+      "The reference density-depth column: contiguous depth intervals "
+      "[length unit] with their density [kg/m^3], from the top down: "
+      "`0, 5: 1030; 5, 11: 2900; 11, 100: 3300`. Empty = no stripping. "
+      "The body force is then -(rho - rho_ref(depth)) g in y, and stresses "
+      "are relative to the reference column.");
+    prm.declare_entry("Depth origin",
+                      "0",
+                      Patterns::Double(),
+                      "y [length unit] at which depth is zero (sea level); "
+                      "depth = origin - y.");
+    prm.declare_entry("Gravity",
+                      "9.81",
+                      Patterns::Double(0),
+                      "Gravitational acceleration g [m/s^2].");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  bool
+  DensityStripping<dim>::parse_parameters(ParameterHandler            &prm,
+                                          const ModelDescription<dim> &model)
+  {
+    const std::string entry = "Loads/Density stripping/Reference column";
+    length_scale            = model.length_scale;
+    prm.enter_subsection("Density stripping");
+    const std::string column = prm.get("Reference column");
+    depth_origin             = prm.get_double("Depth origin") * length_scale;
+    acceleration             = prm.get_double("Gravity");
+    prm.leave_subsection();
+    bottoms.clear();
+    densities.clear();
+    const auto intervals = split_list(column, ';');
+    if (intervals.empty())
+      return false;
+    double previous_bottom = 0;
+    for (unsigned int k = 0; k < intervals.size(); ++k)
+      {
+        const std::string &text  = intervals[k];
+        const auto         colon = text.find(':');
+        const auto         range =
+          split_list(colon == std::string::npos ? "" : text.substr(0, colon));
+        if (colon == std::string::npos || range.size() != 2)
+          throw_input_error(entry,
+                            "interval " + std::to_string(k + 1) + " <" + text +
+                              "> is not `top, bottom: density`");
+        const double top    = parse_number(range[0], entry) * length_scale;
+        const double bottom = parse_number(range[1], entry) * length_scale;
+        const double rho    = parse_number(text.substr(colon + 1), entry);
+        if (!(bottom > top))
+          throw_input_error(entry,
+                            "interval " + std::to_string(k + 1) + " <" + text +
+                              ">: the bottom must be deeper than the top");
+        if (!(rho >= 0))
+          throw_input_error(entry,
+                            "interval " + std::to_string(k + 1) + " <" + text +
+                              ">: the density must not be negative");
+        if (k == 0)
+          column_top = top;
+        else if (std::abs(top - previous_bottom) >
+                 1e-9 * std::max(std::abs(top), std::abs(previous_bottom)))
+          throw_input_error(entry,
+                            "interval " + std::to_string(k + 1) + " <" + text +
+                              "> does not start where the one above ends (" +
+                              (top > previous_bottom ? "a gap" : "an overlap") +
+                              "): the column must be contiguous");
+        bottoms.push_back(bottom);
+        densities.push_back(rho);
+        previous_bottom = bottom;
+      }
+    return true;
+  }
+
+  template <int dim>
+  double
+  DensityStripping<dim>::reference_density(const Point<dim> &p) const
+  {
+    const double depth = depth_origin - p[dim - 1];
+    const auto   it = std::lower_bound(bottoms.begin(), bottoms.end(), depth);
+    return densities[std::min<std::size_t>(it - bottoms.begin(),
+                                           densities.size() - 1)];
+  }
+
+  template <int dim>
+  void
+  DensityStripping<dim>::check_against_mesh(const Triangulation<dim> &tria,
+                                            const Mapping<dim> &) const
+  {
+    const double tolerance = 1e-8 * (bottoms.back() - column_top);
+    for (const Point<dim> &v : tria.get_vertices())
+      {
+        const double depth = depth_origin - v[dim - 1];
+        if (depth < column_top - tolerance ||
+            depth > bottoms.back() + tolerance)
+          {
+            std::ostringstream out;
+            out << "the mesh vertex (" << v[0] / length_scale << ", "
+                << v[1] / length_scale << ") at depth " << depth / length_scale
+                << " [length unit] lies outside the reference column ("
+                << column_top / length_scale << " to "
+                << bottoms.back() / length_scale << ")";
+            throw_input_error("Loads/Density stripping/Reference column",
+                              out.str());
+          }
+      }
+  }
+
+  template <int dim>
+  void
+  DensityStripping<dim>::add_cell_terms(
+    const FEValues<dim>              &fe_values,
+    const FEValuesExtractors::Vector &displacement,
+    const Material                   &material,
+    const ElasticModuli<dim> &,
+    FullMatrix<double> &,
+    Vector<double> &cell_rhs) const
+  {
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const double delta_rho_g =
+          (material.density -
+           reference_density(fe_values.quadrature_point(q))) *
+          acceleration * fe_values.JxW(q);
+        for (const unsigned int i : fe_values.dof_indices())
+          cell_rhs(i) -=
+            delta_rho_g * fe_values[displacement].value(i, q)[dim - 1];
+      }
+  }
+
+  template <int dim>
+  std::string
+  DensityStripping<dim>::description() const
+  {
+    std::ostringstream out;
+    out << "density stripping: body force -(rho - rho_ref) g, g = "
+        << acceleration << " m/s^2, reference column";
+    double top = column_top;
+    for (unsigned int k = 0; k < bottoms.size(); ++k)
+      {
+        out << (k == 0 ? " " : "; ") << top / length_scale << "-"
+            << bottoms[k] / length_scale << ": " << densities[k];
+        top = bottoms[k];
+      }
+    out << " kg/m^3 (depth in length units). STRESSES ARE RELATIVE TO THE "
+           "REFERENCE COLUMN.";
+    return out.str();
+  }
+
+  template class DensityStripping<2>;
+} // namespace lithostress

@@ -1,0 +1,129 @@
+#include <lithostress/base/input_error.h>
+#include <lithostress/loads/thermal_strain.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <sstream>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  ThermalStrain<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Thermal strain");
+    prm.declare_entry("Temperature change",
+                      "",
+                      Patterns::Anything(),
+                      "Temperature change Delta T [K] as a function of x, y "
+                      "[m] (and t [s]); empty = no thermal load.");
+    prm.declare_entry("Constants",
+                      "",
+                      Patterns::Anything(),
+                      "Constants for the expression: name=value, ...");
+    prm.declare_entry("Expansion coefficient",
+                      "1e-5",
+                      Patterns::Double(0),
+                      "Thermal expansion coefficient alpha [1/K], read as "
+                      "Coefficient type says.");
+    prm.declare_entry("Coefficient type",
+                      "",
+                      Patterns::Anything(),
+                      "How alpha is read: `linear` (each length grows by "
+                      "alpha Delta T) or `volumetric` (the volume grows by "
+                      "alpha Delta T, so the linear strain is alpha Delta T / "
+                      "3). Required with a temperature change: the thesis "
+                      "calls its alpha = 1e-5 a volume coefficient (section "
+                      "7.6.2) but its TANOM routine uses it as a linear one.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  bool
+  ThermalStrain<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    const std::string where = "Loads/Thermal strain/";
+    prm.enter_subsection("Thermal strain");
+    const std::string expression =
+      Utilities::trim(prm.get("Temperature change"));
+    const std::string constants = prm.get("Constants");
+    coefficient                 = prm.get_double("Expansion coefficient");
+    const std::string type      = Utilities::trim(prm.get("Coefficient type"));
+    prm.leave_subsection();
+    if (expression.empty())
+      return false;
+    temperature_change =
+      std::make_unique<ParsedExpression<dim>>(expression,
+                                              constants,
+                                              where + "Temperature change");
+    if (type == "linear")
+      volumetric = false;
+    else if (type == "volumetric")
+      volumetric = true;
+    else
+      throw_input_error(where + "Coefficient type",
+                        "must be `linear` or `volumetric` when a temperature "
+                        "change is given, got <" +
+                          type + ">");
+    return true;
+  }
+
+  template <int dim>
+  double
+  ThermalStrain<dim>::initial_strain(const Point<dim> &p) const
+  {
+    return (volumetric ? coefficient / 3.0 : coefficient) *
+           temperature_change->value(p);
+  }
+
+  template <int dim>
+  void
+  ThermalStrain<dim>::add_initial_stress(const Point<dim> &p,
+                                         const Material &,
+                                         const ElasticModuli<dim> &moduli,
+                                         SymmetricTensor<2, dim>  &stress,
+                                         double &sigma_zz) const
+  {
+    const auto s = moduli.isotropic_initial_strain_stress(initial_strain(p));
+    for (unsigned int d = 0; d < dim; ++d)
+      stress[d][d] += s.first;
+    sigma_zz += s.second;
+  }
+
+  template <int dim>
+  void
+  ThermalStrain<dim>::add_cell_terms(
+    const FEValues<dim>              &fe_values,
+    const FEValuesExtractors::Vector &displacement,
+    const Material &,
+    const ElasticModuli<dim> &moduli,
+    FullMatrix<double> &,
+    Vector<double> &cell_rhs) const
+  {
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        // σ0 = s I in plane: −∫ σ0 : ε(v) = −∫ s div v.
+        const double s = moduli
+                           .isotropic_initial_strain_stress(
+                             initial_strain(fe_values.quadrature_point(q)))
+                           .first *
+                         fe_values.JxW(q);
+        for (const unsigned int i : fe_values.dof_indices())
+          cell_rhs(i) -= s * fe_values[displacement].divergence(i, q);
+      }
+  }
+
+  template <int dim>
+  std::string
+  ThermalStrain<dim>::description() const
+  {
+    std::ostringstream out;
+    out << "thermal strain: Delta T = " << temperature_change->text()
+        << " K, alpha = " << coefficient
+        << (volumetric ? " /K (volumetric, linear strain alpha Delta T / 3)"
+                       : " /K (linear)");
+    return out.str();
+  }
+
+  template class ThermalStrain<2>;
+} // namespace lithostress
