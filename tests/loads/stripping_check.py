@@ -49,4 +49,24 @@ for line in ("x5", "x2.5"):
     mid = min(rows, key=lambda r: abs(r["depth"] - 15e3))
     check(abs(mid["sigma_yy"] + g * drho * 5e3) < 1e-9 * scale,
           "%s: sigma_yy at 15 km = %.6g Pa, by hand -g 100 (5 km) = %.6g Pa" % (line, mid["sigma_yy"], -g * drho * 5e3))
+
+# The Griffith test adds the lithostatic stress -rho g depth of the point's
+# own material before the test (FAIL; the stripped stresses lack the
+# overburden). At 15 km in the anomalous layer (T = 10 MPa) the stripped
+# stresses alone would put the point in the tensile regime with C ~ 0.88;
+# with the overburden (-441 MPa) it is in the closed-crack regime with
+# C = 1 - tau_m sqrt(mu^2 + 1) / (mu (sigma_c - sigma_m) + 2 sqrt(T^2 - T sigma_c)),
+# sigma_c = -4.19 T, mu = 1 (the defaults). Tolerance 1e-9: the stresses are exact.
+out = os.path.abspath("output_stripping_griffith")
+run("loads/stripping.prm", out, 1, ["Solver/Type=direct", "Materials/anomaly/Tensile strength=1e7"])
+rows = read_csv(os.path.join(out, "stress_depth_x5.csv"))
+r = min(rows, key=lambda r: abs(r["depth"] - 15e3))
+T, sc, mu_f = 1e7, -4.19e7, 1.0
+litho = -3000.0 * g * r["depth"]
+s1, s2 = r["sigma_1"] + litho, r["sigma_2"] + litho
+sm, tm = (s1 + s2) / 2, (s1 - s2) / 2
+check(sm < sc - 2 * mu_f * (T * T - T * sc) ** 0.5, "15 km: sigma_m = %.4g Pa is in the closed-crack regime" % sm)
+C = 1 - tm * (mu_f ** 2 + 1) ** 0.5 / (mu_f * (sc - sm) + 2 * (T * T - T * sc) ** 0.5)
+check(r["griffith_regime"] == 3 and abs(r["griffith_C"] - C) < 1e-9,
+      "15 km: Griffith regime %d, C = %.9f, by hand with the lithostatic stress %.9f" % (r["griffith_regime"], r["griffith_C"], C))
 finish()
