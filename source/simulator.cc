@@ -293,7 +293,7 @@ namespace lithostress
       load->prepare_for_mesh(triangulation,
                              fe_space->mapping(),
                              fe_space->face_quadrature()[0]);
-    ElasticAssembler<dim> assembler(*fe_space, materials, plane_state, loads);
+    ElasticAssembler<dim> assembler(*fe_space, *stress_model, loads);
     assembler.assemble(dof_handler, system, linear_solver->needs_matrix());
     statistics.assemble_time = clock.wall_time();
   }
@@ -347,31 +347,28 @@ namespace lithostress
       dof_handler, *fe_space, *stress_model, griffith, solution, points);
     if (!points.empty() && Utilities::MPI::this_mpi_process(communicator) == 0)
       write_stress_samples(output_directory + "/point_values.csv", samples);
-    std::vector<PointValue<dim>> values;
-    for (const auto &sample : samples)
-      values.push_back(sample.value);
-    for (unsigned int k = 0; k < values.size(); ++k)
+    for (unsigned int k = 0; k < samples.size(); ++k)
       {
         const std::string at = "@P" + std::to_string(k + 1);
         study.add("u_x" + at,
-                  values[k].displacement[0],
+                  samples[k].value.displacement[0],
                   ConvergenceStudy::Kind::functional);
         study.add("u_y" + at,
-                  values[k].displacement[1],
+                  samples[k].value.displacement[1],
                   ConvergenceStudy::Kind::functional);
         study.add("s_xx" + at,
-                  values[k].stress[0][0],
+                  samples[k].value.stress[0][0],
                   ConvergenceStudy::Kind::functional);
         study.add("s_yy" + at,
-                  values[k].stress[1][1],
+                  samples[k].value.stress[1][1],
                   ConvergenceStudy::Kind::functional);
         study.add("s_xy" + at,
-                  values[k].stress[0][1],
+                  samples[k].value.stress[0][1],
                   ConvergenceStudy::Kind::functional);
         if (reference)
           study.add("err_u" + at,
-                    (values[k].displacement -
-                     reference->displacement(values[k].point))
+                    (samples[k].value.displacement -
+                     reference->displacement(samples[k].value.point))
                       .norm(),
                     ConvergenceStudy::Kind::error);
       }

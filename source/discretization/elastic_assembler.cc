@@ -8,21 +8,62 @@ namespace lithostress
   template <int dim>
   ElasticAssembler<dim>::ElasticAssembler(
     const FiniteElementSpace<dim> &fe_space,
-    const MaterialLibrary         &materials,
-    const PlaneState               plane_state,
+    const StressModel<dim>        &stress_model,
     const LoadCollection<dim>     &loads)
       : fe_space(fe_space)
-      , materials(materials)
-      , plane_state(plane_state)
+      , stress_model(stress_model)
       , loads(loads)
   {
   }
 
   template <int dim>
-  ElasticModuli<dim>
-  ElasticAssembler<dim>::moduli(const types::material_id id) const
+  hp::FEValues<dim>
+  ElasticAssembler<dim>::cell_values(const FiniteElementSpace<dim> &fe_space)
   {
-    return ElasticModuli<dim>(materials(id), plane_state);
+    return hp::FEValues<dim>(fe_space.mapping_collection(),
+                             fe_space.fe_collection(),
+                             fe_space.cell_quadrature(),
+                             update_values | update_gradients |
+                               update_quadrature_points | update_JxW_values);
+  }
+
+  template <int dim>
+  hp::FEFaceValues<dim>
+  ElasticAssembler<dim>::face_values(const FiniteElementSpace<dim> &fe_space)
+  {
+    return hp::FEFaceValues<dim>(fe_space.mapping_collection(),
+                                 fe_space.fe_collection(),
+                                 fe_space.face_quadrature(),
+                                 update_values | update_quadrature_points |
+                                   update_normal_vectors | update_JxW_values);
+  }
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::add_load_terms(
+    const Load<dim>                                      &load,
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const FEValues<dim>                                  &fe_values,
+    hp::FEFaceValues<dim>                                &hp_face_values,
+    const FEValuesExtractors::Vector                     &displacement,
+    const Material                                       &material,
+    const ElasticModuli<dim>                             &moduli,
+    FullMatrix<double>                                   &cell_matrix,
+    Vector<double>                                       &cell_rhs)
+  {
+    load.add_cell_terms(
+      fe_values, displacement, material, moduli, cell_matrix, cell_rhs);
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() &&
+          load.acts_on_boundary(cell->face(f)->boundary_id()))
+        {
+          hp_face_values.reinit(cell, f);
+          load.add_boundary_terms(hp_face_values.get_present_fe_values(),
+                                  cell->face(f)->boundary_id(),
+                                  displacement,
+                                  cell_matrix,
+                                  cell_rhs);
+        }
   }
 
   template <int dim>
@@ -31,24 +72,8 @@ namespace lithostress
                                   LinearSystem<dim>     &system,
                                   const bool             with_matrix) const
   {
-    hp::FEValues<dim>     hp_fe_values(fe_space.mapping_collection(),
-                                   fe_space.fe_collection(),
-                                   fe_space.cell_quadrature(),
-                                   update_values | update_gradients |
-                                     update_quadrature_points |
-                                     update_JxW_values);
-    hp::FEFaceValues<dim> hp_face_values(fe_space.mapping_collection(),
-                                         fe_space.fe_collection(),
-                                         fe_space.face_quadrature(),
-                                         update_values |
-                                           update_quadrature_points |
-                                           update_normal_vectors |
-                                           update_JxW_values);
-
-    std::map<types::material_id, ElasticModuli<dim>> moduli_of;
-    for (const Material &m : materials.materials())
-      moduli_of.emplace(m.id, ElasticModuli<dim>(m, plane_state));
-
+    hp::FEValues<dim>                    hp_fe_values   = cell_values(fe_space);
+    hp::FEFaceValues<dim>                hp_face_values = face_values(fe_space);
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> dofs;
@@ -65,8 +90,9 @@ namespace lithostress
           const unsigned int   n         = fe_values.dofs_per_cell;
           const FEValuesExtractors::Vector u =
             fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
-          const Material           &material = materials(cell->material_id());
-          const ElasticModuli<dim> &moduli   = moduli_of.at(material.id);
+          const Material &material =
+            stress_model.materials(cell->material_id());
+          const ElasticModuli<dim> &moduli = stress_model.moduli(material.id);
 
           cell_matrix.reinit(n, n);
           cell_rhs.reinit(n);
@@ -74,24 +100,15 @@ namespace lithostress
           if (with_matrix)
             add_cell_stiffness(fe_values, moduli, cell_matrix);
           for (const auto &load : loads.loads())
-            load->add_cell_terms(
-              fe_values, u, material, moduli, cell_matrix, cell_rhs);
-
-          for (const unsigned int f : cell->face_indices())
-            if (cell->face(f)->at_boundary() &&
-                loads.acts_on_boundary(cell->face(f)->boundary_id()))
-              {
-                hp_face_values.reinit(cell, f);
-                const FEFaceValues<dim> &face_values =
-                  hp_face_values.get_present_fe_values();
-                for (const auto &load : loads.loads())
-                  if (load->acts_on_boundary(cell->face(f)->boundary_id()))
-                    load->add_boundary_terms(face_values,
-                                             cell->face(f)->boundary_id(),
-                                             u,
-                                             cell_matrix,
-                                             cell_rhs);
-              }
+            add_load_terms(*load,
+                           cell,
+                           fe_values,
+                           hp_face_values,
+                           u,
+                           material,
+                           moduli,
+                           cell_matrix,
+                           cell_rhs);
 
           dofs.resize(n);
           cell->get_dof_indices(dofs);

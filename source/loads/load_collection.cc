@@ -62,15 +62,5 @@ namespace lithostress
     prm.leave_subsection();
   }
 
-  template <int dim>
-  bool
-  LoadCollection<dim>::acts_on_boundary(const types::boundary_id id) const
-  {
-    for (const auto &load : active)
-      if (load->acts_on_boundary(id))
-        return true;
-    return false;
-  }
-
   template class LoadCollection<2>;
 } // namespace lithostress

@@ -96,23 +96,14 @@ namespace lithostress
                         const PrescribedDisplacement<dim>   &prescribed,
                         const TrilinosWrappers::MPI::Vector &solution)
   {
-    const MPI_Comm        comm = dof_handler.get_communicator();
-    const auto           &all  = loads.loads();
-    hp::FEValues<dim>     hp_fe_values(fe_space.mapping_collection(),
-                                   fe_space.fe_collection(),
-                                   fe_space.cell_quadrature(),
-                                   update_values | update_gradients |
-                                     update_quadrature_points |
-                                     update_JxW_values);
-    hp::FEFaceValues<dim> hp_face_values(fe_space.mapping_collection(),
-                                         fe_space.fe_collection(),
-                                         fe_space.face_quadrature(),
-                                         update_values |
-                                           update_quadrature_points |
-                                           update_normal_vectors |
-                                           update_JxW_values);
-    const IndexSet        owned = dof_handler.locally_owned_dofs();
-    IndexSet              relevant;
+    const MPI_Comm    comm = dof_handler.get_communicator();
+    const auto       &all  = loads.loads();
+    hp::FEValues<dim> hp_fe_values =
+      ElasticAssembler<dim>::cell_values(fe_space);
+    hp::FEFaceValues<dim> hp_face_values =
+      ElasticAssembler<dim>::face_values(fe_space);
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     // The residual K u − f of every degree of freedom, without constraints.
     TrilinosWrappers::MPI::Vector residual;
@@ -152,20 +143,15 @@ namespace lithostress
             {
               load_matrix.reinit(n, n);
               load_rhs.reinit(n);
-              all[l]->add_cell_terms(
-                fe_values, u, material, moduli, load_matrix, load_rhs);
-              for (const unsigned int f : cell->face_indices())
-                if (cell->face(f)->at_boundary() &&
-                    all[l]->acts_on_boundary(cell->face(f)->boundary_id()))
-                  {
-                    hp_face_values.reinit(cell, f);
-                    all[l]->add_boundary_terms(
-                      hp_face_values.get_present_fe_values(),
-                      cell->face(f)->boundary_id(),
-                      u,
-                      load_matrix,
-                      load_rhs);
-                  }
+              ElasticAssembler<dim>::add_load_terms(*all[l],
+                                                    cell,
+                                                    fe_values,
+                                                    hp_face_values,
+                                                    u,
+                                                    material,
+                                                    moduli,
+                                                    load_matrix,
+                                                    load_rhs);
               // The force of the load on the body: f − K_load u; its
               // resultant is the sum over each component's shape functions
               // (a partition of unity).

@@ -2,12 +2,12 @@
 #define lithostress_discretization_elastic_assembler_h
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/hp/fe_values.h>
 
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
 #include <lithostress/loads/load_collection.h>
-#include <lithostress/materials/elastic_moduli.h>
-#include <lithostress/materials/material.h>
+#include <lithostress/materials/stress_model.h>
 
 namespace lithostress
 {
@@ -24,8 +24,7 @@ namespace lithostress
   {
   public:
     ElasticAssembler(const FiniteElementSpace<dim> &fe_space,
-                     const MaterialLibrary         &materials,
-                     const PlaneState               plane_state,
+                     const StressModel<dim>        &stress_model,
                      const LoadCollection<dim>     &loads);
 
     /** Assemble matrix (if @p with_matrix) and right-hand side. */
@@ -40,14 +39,33 @@ namespace lithostress
                        const ElasticModuli<dim> &moduli,
                        FullMatrix<double>       &cell_matrix);
 
-    /** The moduli of material @p id in the model's plane state. */
-    ElasticModuli<dim>
-    moduli(const types::material_id id) const;
+    /**
+     * Add the cell and boundary-face terms of @p load on @p cell (whose
+     * values are in @p fe_values) to @p cell_matrix and @p cell_rhs; used by
+     * the assembly and by the force balance, which needs each load alone.
+     */
+    static void
+    add_load_terms(const Load<dim>                                      &load,
+                   const typename DoFHandler<dim>::active_cell_iterator &cell,
+                   const FEValues<dim>              &fe_values,
+                   hp::FEFaceValues<dim>            &hp_face_values,
+                   const FEValuesExtractors::Vector &displacement,
+                   const Material                   &material,
+                   const ElasticModuli<dim>         &moduli,
+                   FullMatrix<double>               &cell_matrix,
+                   Vector<double>                   &cell_rhs);
+
+    /** The cell values the assembly needs, for @p fe_space. */
+    static hp::FEValues<dim>
+    cell_values(const FiniteElementSpace<dim> &fe_space);
+
+    /** The face values the boundary loads need, for @p fe_space. */
+    static hp::FEFaceValues<dim>
+    face_values(const FiniteElementSpace<dim> &fe_space);
 
   private:
     const FiniteElementSpace<dim> &fe_space;
-    const MaterialLibrary         &materials;
-    const PlaneState               plane_state;
+    const StressModel<dim>        &stress_model;
     const LoadCollection<dim>     &loads;
   };
 } // namespace lithostress

@@ -29,10 +29,6 @@ namespace lithostress
       return active;
     }
 
-    /** Whether any load integrates over boundary part @p id. */
-    bool
-    acts_on_boundary(const types::boundary_id id) const;
-
     /** Whether densities are stripped (stresses relative to a reference
      * column). */
     bool
