@@ -104,7 +104,13 @@ namespace lithostress
                       // No island elimination: adaptive refinement at a
                       // singularity must be able to refine a single cell, and
                       // the mesh must not depend on the partition.
-                      Triangulation<dim>::limit_level_difference_at_vertices)
+                      Triangulation<dim>::limit_level_difference_at_vertices,
+                      // The geometric multigrid needs the level hierarchy.
+                      LinearSolverSelector<dim>::may_use_multigrid(prm) ?
+                        parallel::distributed::Triangulation<
+                          dim>::construct_multigrid_hierarchy :
+                        parallel::distributed::Triangulation<
+                          dim>::default_setting)
       , dof_handler(triangulation)
       , wall_clock(communicator, true)
   {
@@ -216,7 +222,7 @@ namespace lithostress
                         "needs Output/Surface profile boundary");
 
     refinement.parse_parameters(prm);
-    linear_solver = LinearSolverSelector<dim>::create(prm);
+    linear_solver = LinearSolverSelector<dim>::create(prm, *fe_space, loads);
     solution_output.parse_parameters(prm);
 
     for (const Point<dim> &p : points)
@@ -266,6 +272,7 @@ namespace lithostress
     TimerOutput::Scope t(*timer, "setup");
     Timer              clock(communicator, true);
     dof_handler.distribute_dofs(fe_space->fe_collection());
+    linear_solver->prepare_dof_handler(dof_handler);
     system.locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler,
                                             system.locally_relevant);
@@ -306,8 +313,13 @@ namespace lithostress
     Timer                         clock(communicator, true);
     TrilinosWrappers::MPI::Vector owned_solution(system.locally_owned,
                                                  communicator);
-    statistics.solver =
-      linear_solver->solve(dof_handler, *fe_space, system, owned_solution);
+    const DiscreteProblem<dim> problem{dof_handler,
+                                       *fe_space,
+                                       system,
+                                       *stress_model,
+                                       loads,
+                                       prescribed_displacement};
+    statistics.solver = linear_solver->solve(problem, owned_solution);
     system.constraints.distribute(owned_solution);
     solution              = owned_solution;
     statistics.solve_time = clock.wall_time();
@@ -510,6 +522,17 @@ namespace lithostress
         TimerOutput::Scope t(*timer, "profiles and figures");
         figures.plot(output_directory, log);
       }
+    if (!statistics.solver.phases.empty())
+      {
+        log << "\nSolver (" << statistics.solver.solver
+            << ", last cycle), wall time by phase:\n";
+        std::ostringstream table;
+        for (const auto &[phase, seconds] : statistics.solver.phases)
+          table << "  " << std::left << std::setw(40) << phase << std::right
+                << std::fixed << std::setprecision(3) << std::setw(9)
+                << seconds << " s\n";
+        log << table.str();
+      }
     write_statistics();
     timer->print_summary();
     log << '\n' << timer_text.str();
@@ -539,7 +562,12 @@ namespace lithostress
         << ", \"matvec_ms\": "
         << 1e3 * statistics.solver.matrix_vector_product_time
         << ", \"total_s\": " << total << ", \"peak_rss_mb\": " << peak_mb
-        << "}\n";
+        << ", \"solver_memory_mb\": " << statistics.solver.memory_bytes / 1048576.
+        << ", \"phases\": {";
+    for (unsigned int k = 0; k < statistics.solver.phases.size(); ++k)
+      out << (k > 0 ? ", " : "") << '"' << statistics.solver.phases[k].first
+          << "\": " << statistics.solver.phases[k].second;
+    out << "}}\n";
   }
 
   template class Simulator<2>;

@@ -172,6 +172,24 @@ namespace lithostress
   }
 
   template <int dim>
+  std::vector<std::pair<types::boundary_id, ComponentMask>>
+  PrescribedDisplacement<dim>::constrained_components(
+    const FiniteElementSpace<dim> &fe_space) const
+  {
+    const unsigned int n_components = fe_space.fe_collection().n_components();
+    std::vector<std::pair<types::boundary_id, ComponentMask>> result;
+    for (const Part &part : parts)
+      {
+        std::vector<bool> mask(n_components, false);
+        for (unsigned int c = 0; c < n_components; ++c)
+          mask[c] = part.from_reference[c % dim] ||
+                    part.component[c % dim] != nullptr;
+        result.emplace_back(part.id, ComponentMask(mask));
+      }
+    return result;
+  }
+
+  template <int dim>
   std::vector<std::pair<std::string, std::array<IndexSet, dim>>>
   PrescribedDisplacement<dim>::constrained_dofs(
     const DoFHandler<dim>         &dof_handler,

@@ -96,8 +96,22 @@ namespace lithostress
 
           cell_matrix.reinit(n, n);
           cell_rhs.reinit(n);
+          dofs.resize(n);
+          cell->get_dof_indices(dofs);
 
-          if (with_matrix)
+          // Without a global matrix, the right-hand side still needs
+          // −K_ij g_j for prescribed values g_j ≠ 0: compute the cell
+          // matrix on the cells that have them.
+          bool inhomogeneous = false;
+          if (!with_matrix)
+            for (const types::global_dof_index i : dofs)
+              if (system.constraints.is_inhomogeneously_constrained(i))
+                {
+                  inhomogeneous = true;
+                  break;
+                }
+
+          if (with_matrix || inhomogeneous)
             add_cell_stiffness(fe_values, moduli, cell_matrix);
           for (const auto &load : loads.loads())
             add_load_terms(*load,
@@ -110,11 +124,14 @@ namespace lithostress
                            cell_matrix,
                            cell_rhs);
 
-          dofs.resize(n);
-          cell->get_dof_indices(dofs);
           if (with_matrix)
             system.constraints.distribute_local_to_global(
               cell_matrix, cell_rhs, dofs, system.matrix, system.rhs);
+          else if (inhomogeneous)
+            system.constraints.distribute_local_to_global(cell_rhs,
+                                                          dofs,
+                                                          system.rhs,
+                                                          cell_matrix);
           else
             system.constraints.distribute_local_to_global(cell_rhs,
                                                           dofs,

@@ -62,5 +62,28 @@ namespace lithostress
     prm.leave_subsection();
   }
 
+  template <int dim>
+  std::map<types::boundary_id, double>
+  LoadCollection<dim>::vertical_springs(
+    const std::vector<types::boundary_id> &boundary_ids) const
+  {
+    std::map<types::boundary_id, double> springs;
+    for (const types::boundary_id id : boundary_ids)
+      for (const auto &load : active)
+        if (load->vertical_spring_stiffness(id) != 0)
+          springs[id] += load->vertical_spring_stiffness(id);
+    return springs;
+  }
+
+  template <int dim>
+  bool
+  LoadCollection<dim>::stiffness_is_vertical_springs() const
+  {
+    for (const auto &load : active)
+      if (!load->stiffness_is_vertical_spring())
+        return false;
+    return true;
+  }
+
   template class LoadCollection<2>;
 } // namespace lithostress

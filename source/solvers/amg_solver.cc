@@ -19,18 +19,18 @@ namespace lithostress
 
   template <int dim>
   SolverReport
-  AMGSolver<dim>::solve(const DoFHandler<dim>         &dof_handler,
-                        const FiniteElementSpace<dim> &fe_space,
-                        const LinearSystem<dim>       &system,
+  AMGSolver<dim>::solve(const DiscreteProblem<dim> &problem,
                         TrilinosWrappers::MPI::Vector &solution)
   {
+    const DoFHandler<dim>   &dof_handler = problem.dof_handler;
+    const LinearSystem<dim> &system      = problem.system;
     SolverReport report;
     report.solver = "amg";
     Timer timer(dof_handler.get_communicator(), true);
 
     const Epetra_CrsMatrix &matrix = system.matrix.trilinos_matrix();
     std::unique_ptr<Epetra_MultiVector> modes =
-      make_rigid_body_modes(dof_handler, fe_space, matrix.DomainMap());
+      make_rigid_body_modes(dof_handler, problem.fe_space, matrix.DomainMap());
 
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;

@@ -15,11 +15,11 @@ namespace lithostress
 
   template <int dim>
   SolverReport
-  DirectSolver<dim>::solve(const DoFHandler<dim> &dof_handler,
-                           const FiniteElementSpace<dim> &,
-                           const LinearSystem<dim>       &system,
+  DirectSolver<dim>::solve(const DiscreteProblem<dim>    &problem,
                            TrilinosWrappers::MPI::Vector &solution)
   {
+    const DoFHandler<dim>   &dof_handler = problem.dof_handler;
+    const LinearSystem<dim> &system      = problem.system;
     SolverReport report;
     report.solver = "direct";
     Timer         timer(dof_handler.get_communicator(), true);

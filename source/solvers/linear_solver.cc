@@ -1,6 +1,9 @@
 #include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/direct_solver.h>
 #include <lithostress/solvers/linear_solver.h>
+#include <lithostress/solvers/multigrid_solver.h>
+
+#include <lithostress/base/input_error.h>
 
 namespace lithostress
 {
@@ -9,11 +12,16 @@ namespace lithostress
   LinearSolverSelector<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
-    prm.declare_entry("Type",
-                      "AMG",
-                      Patterns::Selection("AMG|direct"),
-                      "CG with algebraic multigrid (all rigid-body modes as "
-                      "near-null space), or a sparse direct solver.");
+    prm.declare_entry(
+      "Type",
+      "automatic",
+      Patterns::Selection("automatic|matrix-free multigrid|AMG|direct"),
+      "matrix-free multigrid: CG with a matrix-free geometric multigrid "
+      "V-cycle (no matrix is assembled; one displacement field of degree "
+      "1-3); AMG: CG with algebraic multigrid on the assembled matrix (all "
+      "rigid-body modes as near-null space); direct: a sparse direct "
+      "solver; automatic: the multigrid wherever it applies, AMG "
+      "otherwise.");
     prm.declare_entry("Relative tolerance",
                       "1e-10",
                       Patterns::Double(1e-16, 1),
@@ -34,11 +42,27 @@ namespace lithostress
                       "1e-4",
                       Patterns::Double(0, 1),
                       "ML aggregation threshold (strength of connection).");
+    prm.declare_entry("Multigrid smoother degree",
+                      "5",
+                      Patterns::Integer(1, 20),
+                      "Degree of the Chebyshev smoother on each multigrid "
+                      "level (operator products per smoothing step).");
+    prm.declare_entry("Multigrid smoothing range",
+                      "20",
+                      Patterns::Double(1.5),
+                      "Ratio of the largest eigenvalue to the smallest one "
+                      "the Chebyshev smoother damps.");
+    prm.declare_entry("Multigrid level precision",
+                      "single",
+                      Patterns::Selection("single|double"),
+                      "Floating-point precision of the multigrid levels "
+                      "(the outer CG is always double precision).");
     prm.declare_entry("Time matrix-vector product",
                       "false",
                       Patterns::Bool(),
-                      "Measure one product with the stiffness matrix after "
-                      "the solve and report it in statistics.json (bench).");
+                      "Measure one product with the stiffness matrix (or "
+                      "the matrix-free operator) after the solve and report "
+                      "it in statistics.json (bench).");
     prm.declare_entry("Direct solver",
                       "Amesos_Klu",
                       Patterns::Selection("Amesos_Klu|Amesos_Mumps|"
@@ -48,12 +72,53 @@ namespace lithostress
   }
 
   template <int dim>
-  std::unique_ptr<LinearSolver<dim>>
-  LinearSolverSelector<dim>::create(ParameterHandler &prm)
+  bool
+  LinearSolverSelector<dim>::may_use_multigrid(ParameterHandler &prm)
   {
     prm.enter_subsection("Solver");
+    const std::string type = prm.get("Type");
+    prm.leave_subsection();
+    return type == "automatic" || type == "matrix-free multigrid";
+  }
+
+  template <int dim>
+  std::unique_ptr<LinearSolver<dim>>
+  LinearSolverSelector<dim>::create(ParameterHandler              &prm,
+                                    const FiniteElementSpace<dim> &fe_space,
+                                    const LoadCollection<dim>     &loads)
+  {
+    prm.enter_subsection("Solver");
+    std::string       type = prm.get("Type");
+    std::string       reason;
+    const bool        multigrid_applies =
+      MatrixFreeMultigridSolver<dim>::applies_to(fe_space, loads, reason);
+    if (type == "matrix-free multigrid" && !multigrid_applies)
+      {
+        prm.leave_subsection();
+        throw_input_error("Solver/Type",
+                          "the matrix-free multigrid cannot solve this "
+                          "model: " +
+                            reason + "; use AMG or automatic");
+      }
+    if (type == "automatic")
+      type = multigrid_applies ? "matrix-free multigrid" : "AMG";
+
     std::unique_ptr<LinearSolver<dim>> solver;
-    if (prm.get("Type") == "AMG")
+    if (type == "matrix-free multigrid")
+      {
+        typename MatrixFreeMultigridSolver<dim>::Settings s;
+        s.relative_tolerance = prm.get_double("Relative tolerance");
+        s.max_iterations     = prm.get_integer("Maximum iterations");
+        s.smoother_degree    = prm.get_integer("Multigrid smoother degree");
+        s.smoothing_range    = prm.get_double("Multigrid smoothing range");
+        s.single_precision_levels =
+          prm.get("Multigrid level precision") == "single";
+        s.time_matrix_vector_product =
+          prm.get_bool("Time matrix-vector product");
+        solver = std::make_unique<MatrixFreeMultigridSolver<dim>>(
+          s, fe_space.degree());
+      }
+    else if (type == "AMG")
       {
         typename AMGSolver<dim>::Settings s;
         s.relative_tolerance    = prm.get_double("Relative tolerance");

@@ -2,6 +2,7 @@
 #define lithostress_boundary_conditions_prescribed_displacement_h
 
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/component_mask.h>
 #include <deal.II/lac/affine_constraints.h>
 
 #include <lithostress/base/parsed_expression.h>
@@ -46,6 +47,14 @@ namespace lithostress
     std::vector<std::pair<std::string, std::array<IndexSet, dim>>>
     constrained_dofs(const DoFHandler<dim>         &dof_handler,
                      const FiniteElementSpace<dim> &fe_space) const;
+
+    /**
+     * The boundary parts with prescribed components and the component mask
+     * of each, for solvers that impose the same constraints with value zero
+     * on every multigrid level.
+     */
+    std::vector<std::pair<types::boundary_id, ComponentMask>>
+    constrained_components(const FiniteElementSpace<dim> &fe_space) const;
 
     /** Whether part @p id has a prescribed component. */
     bool

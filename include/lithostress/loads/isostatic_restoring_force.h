@@ -48,6 +48,18 @@ namespace lithostress
     double
     stiffness(const types::boundary_id id) const;
 
+    double
+    vertical_spring_stiffness(const types::boundary_id id) const override
+    {
+      return stiffness(id);
+    }
+
+    bool
+    stiffness_is_vertical_spring() const override
+    {
+      return true;
+    }
+
     std::string
     description() const override;
 

@@ -138,6 +138,26 @@ namespace lithostress
     {
       return false;
     }
+
+    /**
+     * The stiffness k [Pa/m] of the vertical spring this load puts on
+     * boundary part @p id — the traction −k |n_y| u_y e_y of the isostatic
+     * restoring force — or 0. The matrix-free operator builds its boundary
+     * term from it; add_boundary_terms() adds the same term to the matrix.
+     */
+    virtual double
+    vertical_spring_stiffness(const types::boundary_id) const
+    {
+      return 0;
+    }
+
+    /** Whether all of this load's stiffness is vertical_spring_stiffness()
+     * (so that a matrix-free operator can represent it). */
+    virtual bool
+    stiffness_is_vertical_spring() const
+    {
+      return !changes_stiffness();
+    }
   };
 } // namespace lithostress
 

@@ -3,6 +3,7 @@
 
 #include <lithostress/loads/load.h>
 
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -44,6 +45,16 @@ namespace lithostress
     {
       return body_force_absent;
     }
+
+    /** The vertical spring stiffness of all loads on each of
+     * @p boundary_ids that has one [Pa/m]. */
+    std::map<types::boundary_id, double>
+    vertical_springs(const std::vector<types::boundary_id> &boundary_ids) const;
+
+    /** Whether every load's stiffness is a vertical boundary spring (what
+     * the matrix-free operator represents). */
+    bool
+    stiffness_is_vertical_springs() const;
 
   private:
     std::vector<std::unique_ptr<Load<dim>>> active;

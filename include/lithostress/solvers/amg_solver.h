@@ -31,9 +31,7 @@ namespace lithostress
     explicit AMGSolver(const Settings &settings);
 
     SolverReport
-    solve(const DoFHandler<dim>         &dof_handler,
-          const FiniteElementSpace<dim> &fe_space,
-          const LinearSystem<dim>       &system,
+    solve(const DiscreteProblem<dim>    &problem,
           TrilinosWrappers::MPI::Vector &solution) override;
 
   private:

@@ -16,9 +16,7 @@ namespace lithostress
     explicit DirectSolver(const std::string &amesos_solver);
 
     SolverReport
-    solve(const DoFHandler<dim>         &dof_handler,
-          const FiniteElementSpace<dim> &fe_space,
-          const LinearSystem<dim>       &system,
+    solve(const DiscreteProblem<dim>    &problem,
           TrilinosWrappers::MPI::Vector &solution) override;
 
   private:

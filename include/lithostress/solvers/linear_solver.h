@@ -5,11 +5,16 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <lithostress/boundary_conditions/prescribed_displacement.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
+#include <lithostress/loads/load_collection.h>
+#include <lithostress/materials/stress_model.h>
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace lithostress
 {
@@ -23,6 +28,30 @@ namespace lithostress
     double       final_residual = 0;
     /** Time of one product with the system matrix, if measured. */
     double matrix_vector_product_time = 0;
+    /** Set-up and solve time split by phase (name, seconds), for the log
+     * and the benchmark: where the time goes. */
+    std::vector<std::pair<std::string, double>> phases;
+    /** Memory of the solver's data (matrix or matrix-free data, multigrid
+     * levels, preconditioner) [bytes], where it can be measured. */
+    double memory_bytes = 0;
+  };
+
+  /**
+   * Everything a solver may need about the discrete elasticity problem of
+   * one solve: the DoFs and element space, the assembled system (the
+   * matrix only if the solver asked for it), and the model the operator is
+   * made of — moduli, loads that add stiffness, prescribed displacements —
+   * for solvers that apply the operator without a matrix.
+   */
+  template <int dim>
+  struct DiscreteProblem
+  {
+    const DoFHandler<dim>             &dof_handler;
+    const FiniteElementSpace<dim>     &fe_space;
+    const LinearSystem<dim>           &system;
+    const StressModel<dim>            &stress_model;
+    const LoadCollection<dim>         &loads;
+    const PrescribedDisplacement<dim> &prescribed_displacement;
   };
 
   /**
@@ -42,9 +71,7 @@ namespace lithostress
      * distributed by the caller). Throws ComputationError if the solver
      * does not converge. */
     virtual SolverReport
-    solve(const DoFHandler<dim>         &dof_handler,
-          const FiniteElementSpace<dim> &fe_space,
-          const LinearSystem<dim>       &system,
+    solve(const DiscreteProblem<dim>    &problem,
           TrilinosWrappers::MPI::Vector &solution) = 0;
 
     /** Whether this solver needs LinearSystem::matrix. */
@@ -53,17 +80,39 @@ namespace lithostress
     {
       return true;
     }
+
+    /** Prepare the DoF handler after distribute_dofs() (a geometric
+     * multigrid numbers the DoFs of every level). */
+    virtual void
+    prepare_dof_handler(DoFHandler<dim> &) const
+    {
+    }
   };
 
-  /** The `Solver` section: which solver and its settings. */
+  /**
+   * The `Solver` section: which solver and its settings. `automatic` takes
+   * the matrix-free geometric multigrid wherever the model allows it (one
+   * displacement field, degree 1-3, stiffness terms it knows) and CG with
+   * AMG otherwise.
+   */
   template <int dim>
   class LinearSolverSelector
   {
   public:
     static void
     declare_parameters(ParameterHandler &prm);
+
+    /** Whether the triangulation must keep its multigrid hierarchy: the
+     * `Type` may select the multigrid (read before the mesh is built). */
+    static bool
+    may_use_multigrid(ParameterHandler &prm);
+
+    /** The solver for a model with element space @p fe_space and loads
+     * @p loads; throws InputError if the requested solver cannot handle it. */
     static std::unique_ptr<LinearSolver<dim>>
-    create(ParameterHandler &prm);
+    create(ParameterHandler              &prm,
+           const FiniteElementSpace<dim> &fe_space,
+           const LoadCollection<dim>     &loads);
   };
 } // namespace lithostress
 

@@ -1,0 +1,140 @@
+#ifndef lithostress_solvers_elastic_operator_h
+#define lithostress_solvers_elastic_operator_h
+
+#include <deal.II/base/table.h>
+#include <deal.II/base/vectorization.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/matrix_free/matrix_free.h>
+#include <deal.II/matrix_free/operators.h>
+
+#include <functional>
+#include <map>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * Lamé parameters of the in-plane law σ = λ tr(ε) I + 2 μ ε at one point:
+   * λ is the plane-state λ (λ* = 2λμ/(λ + 2μ) in plane stress, SPEC §3.1).
+   */
+  struct LameParameters
+  {
+    double lambda = 0;
+    double mu     = 0;
+  };
+
+  /**
+   * The elasticity stiffness operator without a matrix (SPEC §3.1, thesis
+   * §3.6; the matrix-free technique of deal.II step-37 and Kronbichler &
+   * Kormann 2012): v ↦ ∫ ε(w) : C ε(v) dx + ∫_Γ k |n_y| w_y v_y ds, evaluated
+   * cell by cell with sum factorisation on a degree-@p fe_degree FE_Q^dim
+   * space, through the MatrixFree object's mapping (curved cells follow their
+   * manifolds) and constraints (hanging nodes; prescribed displacements act
+   * as homogeneous constraints: the operator is the identity on them).
+   *
+   * The moduli are constant per cell (from the cell's material) or, for the
+   * visco-elastic loop, given at each quadrature point; the boundary term is
+   * the vertical spring of the isostatic restoring force (thesis §3.10) on
+   * the boundary parts that carry one. Used on the active mesh in double
+   * precision and on every multigrid level (in single precision by
+   * default); the diagonal, for the Chebyshev smoother, includes the
+   * boundary term.
+   */
+  template <int dim, int fe_degree, typename number>
+  class ElasticOperator
+    : public MatrixFreeOperators::Base<dim,
+                                       LinearAlgebra::distributed::Vector<number>>
+  {
+  public:
+    using VectorType = LinearAlgebra::distributed::Vector<number>;
+    using Base       = MatrixFreeOperators::Base<dim, VectorType>;
+    using CellIterator =
+      typename DoFHandler<dim>::cell_iterator;
+
+    /** Moduli of the cell @p cell (a level or active cell iterator). */
+    using CellModuli = std::function<LameParameters(const CellIterator &cell)>;
+
+    /** Moduli at quadrature point @p q of cell @p cell. */
+    using PointModuli =
+      std::function<LameParameters(const CellIterator &cell,
+                                   const unsigned int  q)>;
+
+    /** Take moduli constant per cell from @p moduli. */
+    void
+    set_cell_moduli(const CellModuli &moduli);
+
+    /** Take moduli at each quadrature point from @p moduli (stored per
+     * point: costs 2 numbers per point and a little speed). */
+    void
+    set_point_moduli(const PointModuli &moduli);
+
+    /**
+     * Vertical spring stiffnesses k [Pa/m] per boundary id; the term is
+     * k |n_y| on every face of that boundary part (the MatrixFree object
+     * must have boundary-face data with normals and JxW).
+     */
+    void
+    set_vertical_springs(
+      const std::map<types::boundary_id, double> &stiffness_by_boundary);
+
+    /** Diagonal of the operator (springs included), and its inverse for
+     * the Chebyshev smoother; 1 on constrained entries. */
+    void
+    compute_diagonal() override;
+
+    void
+    clear() override;
+
+    /** Memory of the moduli tables and the MatrixFree data [bytes]. */
+    std::size_t
+    memory_consumption() const override;
+
+  private:
+    void
+    apply_add(VectorType &dst, const VectorType &src) const override;
+
+    void
+    local_apply_cell(const MatrixFree<dim, number>               &data,
+                     VectorType                                  &dst,
+                     const VectorType                            &src,
+                     const std::pair<unsigned int, unsigned int> &range) const;
+
+    void
+    local_apply_inner_face(
+      const MatrixFree<dim, number> &,
+      VectorType &,
+      const VectorType &,
+      const std::pair<unsigned int, unsigned int> &) const
+    {
+    }
+
+    void
+    local_apply_boundary(
+      const MatrixFree<dim, number>               &data,
+      VectorType                                  &dst,
+      const VectorType                            &src,
+      const std::pair<unsigned int, unsigned int> &range) const;
+
+    /** The stress of the strain at every quadrature point of @p phi. */
+    template <typename Evaluator>
+    void
+    do_cell_integral(Evaluator &phi) const;
+
+    /** The spring traction of the displacement at every point of @p phi. */
+    template <typename FaceEvaluator>
+    void
+    do_boundary_integral(FaceEvaluator &phi, const number k) const;
+
+    /** Spring stiffness of boundary id @p id, 0 if none. */
+    number
+    spring_stiffness(const types::boundary_id id) const;
+
+    AlignedVector<VectorizedArray<number>>  lambda_cell, mu_cell;
+    Table<2, VectorizedArray<number>>       lambda_point, mu_point;
+    bool                                    moduli_at_points = false;
+    std::map<types::boundary_id, double>    springs;
+  };
+} // namespace lithostress
+
+#endif

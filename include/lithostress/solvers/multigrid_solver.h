@@ -1,0 +1,85 @@
+#ifndef lithostress_solvers_multigrid_solver_h
+#define lithostress_solvers_multigrid_solver_h
+
+#include <lithostress/solvers/linear_solver.h>
+
+#include <memory>
+
+namespace lithostress
+{
+  /**
+   * CG preconditioned by a matrix-free geometric multigrid V-cycle (deal.II
+   * step-37/step-50; Kronbichler & Kormann 2012, Clevenger et al. 2021):
+   * the elasticity operator is applied cell by cell (ElasticOperator) on the
+   * active mesh in double precision and on every level of the p4est
+   * hierarchy (local smoothing, MGTransferMatrixFree with MGConstrainedDoFs
+   * for refinement edges and prescribed displacements), in single precision
+   * by default; Chebyshev smoothing on the diagonal; the coarse mesh solved
+   * by a sparse direct solver (CoarseGridSolver). Needs no matrix, no
+   * sparsity pattern and no AMG set-up; stops when ‖r‖ ≤ tol ‖f‖
+   * (unpreconditioned residual, as the AMG solver).
+   *
+   * Applies to one displacement field of degree 1 to 3 whose extra
+   * stiffness is vertical boundary springs (isostatic restoring force).
+   */
+  template <int dim>
+  class MatrixFreeMultigridSolver : public LinearSolver<dim>
+  {
+  public:
+    struct Settings
+    {
+      double       relative_tolerance = 1e-10;
+      unsigned int max_iterations     = 1000;
+      /** Chebyshev polynomial degree of the smoother. */
+      unsigned int smoother_degree = 5;
+      /** Ratio of largest to smallest eigenvalue the smoother damps. */
+      double smoothing_range = 20;
+      /** Multigrid levels in single precision inside double-precision CG. */
+      bool single_precision_levels = true;
+      /** Time operator products (for the benchmark). */
+      bool time_matrix_vector_product = false;
+    };
+
+    MatrixFreeMultigridSolver(const Settings &settings,
+                              const unsigned int fe_degree);
+    ~MatrixFreeMultigridSolver() override;
+
+    /** Whether the multigrid applies to a model with @p fe_space and
+     * @p loads; if not, @p reason says why. */
+    static bool
+    applies_to(const FiniteElementSpace<dim> &fe_space,
+               const LoadCollection<dim>     &loads,
+               std::string                   &reason);
+
+    SolverReport
+    solve(const DiscreteProblem<dim>    &problem,
+          TrilinosWrappers::MPI::Vector &solution) override;
+
+    bool
+    needs_matrix() const override
+    {
+      return false;
+    }
+
+    /** Number the DoFs of every level. */
+    void
+    prepare_dof_handler(DoFHandler<dim> &dof_handler) const override;
+
+    /** The solver for one element degree and level precision. */
+    class Implementation
+    {
+    public:
+      virtual ~Implementation() = default;
+      virtual SolverReport
+      solve(const DiscreteProblem<dim>    &problem,
+            TrilinosWrappers::MPI::Vector &solution,
+            const Settings                &settings) = 0;
+    };
+
+  private:
+    Settings                        settings;
+    std::unique_ptr<Implementation> implementation;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,306 @@
+// The matrix-free elasticity operator against an assembled matrix (issue 5,
+// verification 1): on a curved (quarter annulus, degree-2 mapping),
+// adaptively refined (hanging nodes, also on curved boundaries), two-material
+// mesh with vertical springs on a curved and a straight boundary part and
+// prescribed displacements (one part fixed, one a roller), the product of
+// ElasticOperator with random vectors equals the product with a matrix
+// assembled here, independently, with FEValues — to round-off. Checked with
+// moduli per cell (by material) and per quadrature point (varying in space),
+// on whatever number of ranks the test is started on.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <lithostress/solvers/elastic_operator.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <random>
+
+using namespace dealii;
+using namespace lithostress;
+
+namespace
+{
+  constexpr int dim    = 2;
+  constexpr int degree = 2;
+
+  // Two materials (inner ring 0, outer shell 1) with contrasting moduli.
+  LameParameters
+  material_moduli(const types::material_id id)
+  {
+    return id == 0 ? LameParameters{2.0e10, 3.0e10} :
+                     LameParameters{7.0e10, 1.0e10};
+  }
+
+  // Moduli varying in space (for the per-point variant): smooth, positive.
+  LameParameters
+  point_moduli(const types::material_id id, const Point<dim> &p)
+  {
+    LameParameters m = material_moduli(id);
+    m.lambda *= 1 + 0.5 * std::sin(3 * p[0]) * std::cos(2 * p[1]);
+    m.mu *= 1.5 + 0.4 * std::cos(p[0] + 2 * p[1]);
+    return m;
+  }
+
+  // Spring stiffnesses [Pa/m] of the order of μ/h (h ≈ 0.03 the finest
+  // cells), so that the boundary term is a sizeable part of the product
+  // with a random vector (the check of the check below makes sure).
+  const std::map<types::boundary_id, double> springs = {{1, 1.0e12},
+                                                        {2, 2.0e12}};
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm = MPI_COMM_WORLD;
+  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+
+  parallel::distributed::Triangulation<dim> tria(
+    comm,
+    Triangulation<dim>::limit_level_difference_at_vertices,
+    parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy);
+  // Boundary ids: 0 inner arc, 1 outer arc, 2 and 3 the straight sides.
+  GridGenerator::quarter_hyper_shell(tria, Point<dim>(), 1.0, 2.0, 0, true);
+  tria.refine_global(2);
+  for (const auto &cell : tria.active_cell_iterators())
+    cell->set_material_id(cell->center().norm() > 1.5 ? 1 : 0);
+  for (unsigned int step = 0; step < 2; ++step)
+    {
+      // Refine near the middle of the outer arc and near one straight side,
+      // so that hanging nodes sit on curved and straight spring boundaries.
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            (cell->center().distance(Point<dim>(1.3, 1.3)) < 0.45 ||
+             cell->center()[1] < 0.25))
+          cell->set_refine_flag();
+      tria.execute_coarsening_and_refinement();
+    }
+
+  const FESystem<dim> fe(FE_Q<dim>(degree), dim);
+  const MappingQ<dim> mapping(2);
+  DoFHandler<dim>     dof_handler(tria);
+  dof_handler.distribute_dofs(fe);
+  const IndexSet owned    = dof_handler.locally_owned_dofs();
+  const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+
+  AffineConstraints<double> constraints;
+  constraints.reinit(relevant);
+  DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+  VectorTools::interpolate_boundary_values(
+    mapping, dof_handler, 0, Functions::ZeroFunction<dim>(dim), constraints);
+  VectorTools::interpolate_boundary_values(mapping,
+                                           dof_handler,
+                                           3,
+                                           Functions::ZeroFunction<dim>(dim),
+                                           constraints,
+                                           ComponentMask(std::vector<bool>{true, false}));
+  constraints.close();
+
+  unsigned int failures = 0;
+  for (const bool at_points : {false, true})
+    {
+      // Assembled matrix, independently of the operator.
+      TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
+      DoFTools::make_sparsity_pattern(
+        dof_handler, pattern, constraints, false, rank);
+      pattern.compress();
+      TrilinosWrappers::SparseMatrix matrix(pattern);
+
+      const QGauss<dim>     quadrature(degree + 1);
+      const QGauss<dim - 1> face_quadrature(degree + 1);
+      FEValues<dim>         fe_values(mapping,
+                              fe,
+                              quadrature,
+                              update_gradients | update_JxW_values |
+                                update_quadrature_points);
+      FEFaceValues<dim>     face_values(mapping,
+                                    fe,
+                                    face_quadrature,
+                                    update_values | update_normal_vectors |
+                                      update_JxW_values);
+      const FEValuesExtractors::Vector     u(0);
+      const unsigned int                   n = fe.n_dofs_per_cell();
+      FullMatrix<double>                   cell_matrix(n, n);
+      std::vector<types::global_dof_index> dofs(n);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell_matrix = 0;
+            fe_values.reinit(cell);
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const LameParameters m =
+                  at_points ?
+                    point_moduli(cell->material_id(),
+                                 fe_values.quadrature_point(q)) :
+                    material_moduli(cell->material_id());
+                for (unsigned int i = 0; i < n; ++i)
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      const auto ei = fe_values[u].symmetric_gradient(i, q);
+                      const auto ej = fe_values[u].symmetric_gradient(j, q);
+                      cell_matrix(i, j) +=
+                        (m.lambda * trace(ei) * trace(ej) +
+                         2 * m.mu * (ei * ej)) *
+                        fe_values.JxW(q);
+                    }
+              }
+            for (const unsigned int f : cell->face_indices())
+              if (cell->at_boundary(f) &&
+                  springs.count(cell->face(f)->boundary_id()))
+                {
+                  face_values.reinit(cell, f);
+                  const double k = springs.at(cell->face(f)->boundary_id());
+                  for (const unsigned int q :
+                       face_values.quadrature_point_indices())
+                    for (unsigned int i = 0; i < n; ++i)
+                      for (unsigned int j = 0; j < n; ++j)
+                        cell_matrix(i, j) +=
+                          k * std::abs(face_values.normal_vector(q)[1]) *
+                          face_values[u].value(i, q)[1] *
+                          face_values[u].value(j, q)[1] * face_values.JxW(q);
+                }
+            cell->get_dof_indices(dofs);
+            constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
+          }
+      matrix.compress(VectorOperation::add);
+
+      // The matrix-free operator on the same mesh and constraints.
+      using Operator = ElasticOperator<dim, degree, double>;
+      typename MatrixFree<dim, double>::AdditionalData data;
+      data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
+      data.mapping_update_flags  = update_gradients | update_JxW_values;
+      data.mapping_update_flags_boundary_faces =
+        update_values | update_normal_vectors | update_JxW_values;
+      auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
+      matrix_free->reinit(
+        mapping, dof_handler, constraints, QGauss<1>(degree + 1), data);
+      Operator op;
+      op.initialize(matrix_free);
+      if (at_points)
+        {
+          FEValues<dim> points(mapping,
+                               fe,
+                               quadrature,
+                               update_quadrature_points);
+          op.set_point_moduli(
+            [&](const typename Operator::CellIterator &cell,
+                const unsigned int                     q) {
+              points.reinit(cell);
+              return point_moduli(cell->material_id(),
+                                  points.quadrature_point(q));
+            });
+        }
+      else
+        op.set_cell_moduli([](const typename Operator::CellIterator &cell) {
+          return material_moduli(cell->material_id());
+        });
+      op.set_vertical_springs(springs);
+
+      std::mt19937                           random(17 + rank);
+      std::uniform_real_distribution<double> uniform(-1, 1);
+      for (unsigned int trial = 0; trial < 3; ++trial)
+        {
+          LinearAlgebra::distributed::Vector<double> x, y;
+          op.initialize_dof_vector(x);
+          op.initialize_dof_vector(y);
+          TrilinosWrappers::MPI::Vector xt(owned, comm), yt(owned, comm);
+          for (const types::global_dof_index i : owned)
+            if (!constraints.is_constrained(i))
+              {
+                const double value = uniform(random);
+                x(i)               = value;
+                xt[i]              = value;
+              }
+          xt.compress(VectorOperation::insert);
+          op.vmult(y, x);
+          matrix.vmult(yt, xt);
+          double difference = 0, norm = 0;
+          for (const types::global_dof_index i : owned)
+            if (!constraints.is_constrained(i))
+              {
+                difference = std::max(difference, std::abs(y(i) - yt[i]));
+                norm       = std::max(norm, std::abs(yt[i]));
+              }
+          difference = Utilities::MPI::max(difference, comm);
+          norm       = Utilities::MPI::max(norm, comm);
+
+          // Check of the check: the spring term matters in this product.
+          Operator without_springs;
+          without_springs.initialize(matrix_free);
+          without_springs.set_cell_moduli(
+            [](const typename Operator::CellIterator &cell) {
+              return material_moduli(cell->material_id());
+            });
+          LinearAlgebra::distributed::Vector<double> z;
+          without_springs.initialize_dof_vector(z);
+          without_springs.vmult(z, x);
+          if (!at_points)
+            {
+              z -= y;
+              const double spring_part = z.linfty_norm() / norm;
+              const bool   visible     = spring_part > 1e-2;
+              failures += visible ? 0 : 1;
+              if (rank == 0)
+                std::cout << "springs change K x by " << spring_part
+                          << " of max |K x|" << (visible ? "  ok" : "  FAILED")
+                          << std::endl;
+            }
+          // Round-off: both sum O(100) products of O(norm) terms per row in
+          // a different order; 1e-12 is ~5000 ulp of the largest entry.
+          const bool ok = difference <= 1e-12 * norm;
+          failures += ok ? 0 : 1;
+          if (rank == 0)
+            std::cout << (at_points ? "moduli at points" : "moduli per cell ")
+                      << ", trial " << trial << ": " << dof_handler.n_dofs()
+                      << " DoFs, max |K x - A x| / max |K x| = "
+                      << difference / norm << (ok ? "  ok" : "  FAILED")
+                      << std::endl;
+        }
+
+      // The operator's diagonal (springs included) against the matrix's,
+      // on unconstrained DoFs that no hanging-node constraint refers to.
+      op.compute_diagonal();
+      const auto &diagonal = op.get_matrix_diagonal()->get_vector();
+      IndexSet    masters(dof_handler.n_dofs());
+      for (const auto &line : constraints.get_lines())
+        for (const auto &entry : line.entries)
+          masters.add_index(entry.first);
+      double difference = 0, norm = 0;
+      for (const types::global_dof_index i : owned)
+        if (!constraints.is_constrained(i) && !masters.is_element(i))
+          {
+            difference =
+              std::max(difference, std::abs(diagonal(i) - matrix.diag_element(i)));
+            norm = std::max(norm, std::abs(matrix.diag_element(i)));
+          }
+      difference = Utilities::MPI::max(difference, comm);
+      norm       = Utilities::MPI::max(norm, comm);
+      const bool ok = difference <= 1e-12 * norm;
+      failures += ok ? 0 : 1;
+      if (rank == 0)
+        std::cout << (at_points ? "moduli at points" : "moduli per cell ")
+                  << ", diagonal: max difference / max entry = "
+                  << difference / norm << (ok ? "  ok" : "  FAILED")
+                  << std::endl;
+    }
+  failures = Utilities::MPI::max(failures, comm);
+  if (rank == 0)
+    std::cout << (failures == 0 ? "PASSED" : "FAILED") << std::endl;
+  return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
+}
