@@ -99,7 +99,8 @@ namespace lithostress
   GmshMesh<dim>::create_coarse_mesh(
     parallel::distributed::Triangulation<dim> &tria) const
   {
-    Triangulation<dim> serial;
+    // Same mesh smoothing: copy_triangulation() takes it from the copy.
+    Triangulation<dim> serial(tria.get_mesh_smoothing());
     GridIn<dim>        grid_in;
     grid_in.attach_triangulation(serial);
     std::ifstream in(mesh_file);
