@@ -100,17 +100,17 @@ namespace lithostress
                                             timer_stream,
                                             TimerOutput::never,
                                             TimerOutput::wall_times))
-      , triangulation(communicator,
-                      // No island elimination: adaptive refinement at a
-                      // singularity must be able to refine a single cell, and
-                      // the mesh must not depend on the partition.
-                      Triangulation<dim>::limit_level_difference_at_vertices,
-                      // The geometric multigrid needs the level hierarchy.
-                      LinearSolverSelector<dim>::may_use_multigrid(prm) ?
-                        parallel::distributed::Triangulation<
-                          dim>::construct_multigrid_hierarchy :
-                        parallel::distributed::Triangulation<
-                          dim>::default_setting)
+      , triangulation(
+          communicator,
+          // No island elimination: adaptive refinement at a
+          // singularity must be able to refine a single cell, and
+          // the mesh must not depend on the partition.
+          Triangulation<dim>::limit_level_difference_at_vertices,
+          // The geometric multigrid needs the level hierarchy.
+          LinearSolverSelector<dim>::may_use_multigrid(prm)
+            ? parallel::distributed::Triangulation<
+                dim>::construct_multigrid_hierarchy
+            : parallel::distributed::Triangulation<dim>::default_setting)
       , dof_handler(triangulation)
       , wall_clock(communicator, true)
   {
@@ -313,7 +313,7 @@ namespace lithostress
     Timer                         clock(communicator, true);
     TrilinosWrappers::MPI::Vector owned_solution(system.locally_owned,
                                                  communicator);
-    const DiscreteProblem<dim> problem{dof_handler,
+    const DiscreteProblem<dim>    problem{dof_handler,
                                        *fe_space,
                                        system,
                                        *stress_model,
@@ -529,8 +529,8 @@ namespace lithostress
         std::ostringstream table;
         for (const auto &[phase, seconds] : statistics.solver.phases)
           table << "  " << std::left << std::setw(40) << phase << std::right
-                << std::fixed << std::setprecision(3) << std::setw(9)
-                << seconds << " s\n";
+                << std::fixed << std::setprecision(3) << std::setw(9) << seconds
+                << " s\n";
         log << table.str();
       }
     write_statistics();
@@ -562,8 +562,8 @@ namespace lithostress
         << ", \"matvec_ms\": "
         << 1e3 * statistics.solver.matrix_vector_product_time
         << ", \"total_s\": " << total << ", \"peak_rss_mb\": " << peak_mb
-        << ", \"solver_memory_mb\": " << statistics.solver.memory_bytes / 1048576.
-        << ", \"phases\": {";
+        << ", \"solver_memory_mb\": "
+        << statistics.solver.memory_bytes / 1048576. << ", \"phases\": {";
     for (unsigned int k = 0; k < statistics.solver.phases.size(); ++k)
       out << (k > 0 ? ", " : "") << '"' << statistics.solver.phases[k].first
           << "\": " << statistics.solver.phases[k].second;

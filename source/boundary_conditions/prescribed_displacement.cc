@@ -182,8 +182,8 @@ namespace lithostress
       {
         std::vector<bool> mask(n_components, false);
         for (unsigned int c = 0; c < n_components; ++c)
-          mask[c] = part.from_reference[c % dim] ||
-                    part.component[c % dim] != nullptr;
+          mask[c] =
+            part.from_reference[c % dim] || part.component[c % dim] != nullptr;
         result.emplace_back(part.id, ComponentMask(mask));
       }
     return result;

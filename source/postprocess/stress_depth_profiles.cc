@@ -99,11 +99,10 @@ namespace lithostress
         const bool top_inside_search  = first == 0;
         const bool base_inside_search = last + 1 == static_cast<int>(n_search);
         std::array<std::pair<double, double>, 2> bracket = {
-          {{top_inside_search ? search[0][dim - 1] :
-                                search[first - 1][dim - 1],
+          {{top_inside_search ? search[0][dim - 1] : search[first - 1][dim - 1],
             search[first][dim - 1]},
-           {base_inside_search ? search[last][dim - 1] :
-                                 search[last + 1][dim - 1],
+           {base_inside_search ? search[last][dim - 1]
+                               : search[last + 1][dim - 1],
             search[last][dim - 1]}}};
         constexpr unsigned int n_split = 32;
         for (unsigned int round = 0; round < 6; ++round)
@@ -113,10 +112,10 @@ namespace lithostress
               for (unsigned int k = 1; k <= n_split; ++k)
                 {
                   Point<dim> p;
-                  p[0]       = positions[l];
-                  p[dim - 1] = bracket[b].first + (bracket[b].second -
-                                                   bracket[b].first) *
-                                                    k / (n_split + 1);
+                  p[0] = positions[l];
+                  p[dim - 1] =
+                    bracket[b].first +
+                    (bracket[b].second - bracket[b].first) * k / (n_split + 1);
                   trial.push_back(p);
                 }
             const auto values = evaluate_at_points(

@@ -19,12 +19,12 @@ namespace lithostress
 
   template <int dim>
   SolverReport
-  AMGSolver<dim>::solve(const DiscreteProblem<dim> &problem,
+  AMGSolver<dim>::solve(const DiscreteProblem<dim>    &problem,
                         TrilinosWrappers::MPI::Vector &solution)
   {
     const DoFHandler<dim>   &dof_handler = problem.dof_handler;
     const LinearSystem<dim> &system      = problem.system;
-    SolverReport report;
+    SolverReport             report;
     report.solver = "amg";
     Timer timer(dof_handler.get_communicator(), true);
 

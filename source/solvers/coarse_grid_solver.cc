@@ -19,9 +19,9 @@ namespace lithostress
     const CellModuli                           &moduli,
     const std::map<types::boundary_id, double> &springs)
   {
-    const MPI_Comm communicator = dof_handler.get_communicator();
-    const FiniteElement<dim> &fe = dof_handler.get_fe();
-    owned                        = dof_handler.locally_owned_mg_dofs(0);
+    const MPI_Comm            communicator = dof_handler.get_communicator();
+    const FiniteElement<dim> &fe           = dof_handler.get_fe();
+    owned = dof_handler.locally_owned_mg_dofs(0);
     const IndexSet relevant =
       DoFTools::extract_locally_relevant_level_dofs(dof_handler, 0);
 
@@ -38,18 +38,18 @@ namespace lithostress
                                                relevant);
     matrix.reinit(owned, owned, pattern, communicator);
 
-    const unsigned int  n_points = fe.degree + 1;
-    FEValues<dim>       fe_values(mapping,
+    const unsigned int                   n_points = fe.degree + 1;
+    FEValues<dim>                        fe_values(mapping,
                             fe,
                             QGauss<dim>(n_points),
                             update_gradients | update_JxW_values);
-    FEFaceValues<dim>   face_values(mapping,
+    FEFaceValues<dim>                    face_values(mapping,
                                   fe,
                                   QGauss<dim - 1>(n_points),
                                   update_values | update_normal_vectors |
                                     update_JxW_values);
-    const unsigned int  n = fe.n_dofs_per_cell();
-    FullMatrix<double>  cell_matrix(n, n);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<SymmetricTensor<2, dim>> strain(n);
     std::vector<double>                  divergence(n), vertical(n);

@@ -20,7 +20,7 @@ namespace lithostress
   {
     const DoFHandler<dim>   &dof_handler = problem.dof_handler;
     const LinearSystem<dim> &system      = problem.system;
-    SolverReport report;
+    SolverReport             report;
     report.solver = "direct";
     Timer         timer(dof_handler.get_communicator(), true);
     SolverControl control(1, 0);

@@ -48,9 +48,9 @@ namespace lithostress
   ElasticOperator<dim, fe_degree, number>::set_point_moduli(
     const PointModuli &moduli)
   {
-    const MatrixFree<dim, number> &data     = *this->data;
-    const unsigned int             batches  = data.n_cell_batches();
-    const unsigned int             n_points = Utilities::pow(fe_degree + 1, dim);
+    const MatrixFree<dim, number> &data    = *this->data;
+    const unsigned int             batches = data.n_cell_batches();
+    const unsigned int n_points            = Utilities::pow(fe_degree + 1, dim);
     lambda_point.reinit(batches, n_points);
     mu_point.reinit(batches, n_points);
     for (unsigned int b = 0; b < batches; ++b)
@@ -95,7 +95,7 @@ namespace lithostress
   ElasticOperator<dim, fe_degree, number>::do_cell_integral(
     Evaluator &phi) const
   {
-    const unsigned int cell = phi.get_current_cell_index();
+    const unsigned int      cell   = phi.get_current_cell_index();
     VectorizedArray<number> lambda = 0, mu = 0;
     if (!moduli_at_points)
       {
@@ -112,7 +112,7 @@ namespace lithostress
         // σ = λ tr(ε) I + 2 μ ε with ε = (∇u + ∇uᵀ)/2, submitted as a full
         // tensor (cheaper than the symmetric-tensor interface).
         Tensor<2, dim, VectorizedArray<number>> gradient = phi.get_gradient(q);
-        VectorizedArray<number> volumetric = gradient[0][0];
+        VectorizedArray<number>                 volumetric = gradient[0][0];
         for (unsigned int d = 1; d < dim; ++d)
           volumetric += gradient[d][d];
         volumetric *= lambda;
@@ -226,8 +226,7 @@ namespace lithostress
     {
       FEEvaluation<dim, fe_degree, fe_degree + 1, 1, number> scalar(
         *this->data);
-      FEEvaluation<dim, fe_degree, fe_degree + 1, dim, number> phi(
-        *this->data);
+      FEEvaluation<dim, fe_degree, fe_degree + 1, dim, number> phi(*this->data);
       const unsigned int n = scalar.dofs_per_cell;
       for (unsigned int cell = 0; cell < this->data->n_cell_batches(); ++cell)
         {
@@ -243,17 +242,18 @@ namespace lithostress
               for (const unsigned int q : scalar.quadrature_point_indices())
                 {
                   const VectorizedArray<number> lambda =
-                    moduli_at_points ? lambda_point(cell, q) : lambda_cell[cell];
+                    moduli_at_points ? lambda_point(cell, q)
+                                     : lambda_cell[cell];
                   const VectorizedArray<number> mu =
                     moduli_at_points ? mu_point(cell, q) : mu_cell[cell];
                   const Tensor<1, dim, VectorizedArray<number>> gradient =
                     scalar.get_gradient(q);
-                  const VectorizedArray<number> JxW = scalar.JxW(q);
+                  const VectorizedArray<number> JxW   = scalar.JxW(q);
                   const VectorizedArray<number> norm2 = gradient.norm_square();
                   for (unsigned int c = 0; c < dim; ++c)
-                    entry[c] += ((lambda + mu) * gradient[c] * gradient[c] +
-                                 mu * norm2) *
-                                JxW;
+                    entry[c] +=
+                      ((lambda + mu) * gradient[c] * gradient[c] + mu * norm2) *
+                      JxW;
                 }
               for (unsigned int c = 0; c < dim; ++c)
                 phi.begin_dof_values()[c * n + a] = entry[c];
@@ -271,11 +271,11 @@ namespace lithostress
           *this->data, true);
         AlignedVector<VectorizedArray<number>> local(phi.dofs_per_cell);
         const unsigned int first = this->data->n_inner_face_batches();
-        const unsigned int last =
-          first + this->data->n_boundary_face_batches();
+        const unsigned int last = first + this->data->n_boundary_face_batches();
         for (unsigned int face = first; face < last; ++face)
           {
-            const number k = spring_stiffness(this->data->get_boundary_id(face));
+            const number k =
+              spring_stiffness(this->data->get_boundary_id(face));
             if (k == number(0))
               continue;
             phi.reinit(face);
@@ -300,9 +300,9 @@ namespace lithostress
     VectorType &inverse = this->inverse_diagonal_entries->get_vector();
     inverse.reinit(diagonal);
     for (unsigned int i = 0; i < diagonal.locally_owned_size(); ++i)
-      inverse.local_element(i) = diagonal.local_element(i) > number(0) ?
-                                   number(1) / diagonal.local_element(i) :
-                                   number(1);
+      inverse.local_element(i) = diagonal.local_element(i) > number(0)
+                                   ? number(1) / diagonal.local_element(i)
+                                   : number(1);
   }
 
   template <int dim, int fe_degree, typename number>
@@ -310,12 +310,11 @@ namespace lithostress
   ElasticOperator<dim, fe_degree, number>::memory_consumption() const
   {
     return Base::memory_consumption() + this->data->memory_consumption() +
-           lambda_cell.memory_consumption() +
-           mu_cell.memory_consumption() + lambda_point.memory_consumption() +
-           mu_point.memory_consumption();
+           lambda_cell.memory_consumption() + mu_cell.memory_consumption() +
+           lambda_point.memory_consumption() + mu_point.memory_consumption();
   }
 
-#define LITHOSTRESS_INSTANTIATE(DEGREE)            \
+#define LITHOSTRESS_INSTANTIATE(DEGREE)             \
   template class ElasticOperator<2, DEGREE, float>; \
   template class ElasticOperator<2, DEGREE, double>;
   LITHOSTRESS_INSTANTIATE(1)

@@ -88,9 +88,9 @@ namespace lithostress
                                     const LoadCollection<dim>     &loads)
   {
     prm.enter_subsection("Solver");
-    std::string       type = prm.get("Type");
-    std::string       reason;
-    const bool        multigrid_applies =
+    std::string type = prm.get("Type");
+    std::string reason;
+    const bool  multigrid_applies =
       MatrixFreeMultigridSolver<dim>::applies_to(fe_space, loads, reason);
     if (type == "matrix-free multigrid" && !multigrid_applies)
       {
@@ -115,8 +115,9 @@ namespace lithostress
           prm.get("Multigrid level precision") == "single";
         s.time_matrix_vector_product =
           prm.get_bool("Time matrix-vector product");
-        solver = std::make_unique<MatrixFreeMultigridSolver<dim>>(
-          s, fe_space.degree());
+        solver =
+          std::make_unique<MatrixFreeMultigridSolver<dim>>(s,
+                                                           fe_space.degree());
       }
     else if (type == "AMG")
       {

@@ -50,15 +50,16 @@ namespace lithostress
 
     template <int dim, int degree, typename number>
     class MultigridImplementation
-      : public MatrixFreeMultigridSolver<dim>::Implementation
+        : public MatrixFreeMultigridSolver<dim>::Implementation
     {
     public:
-      using Settings         = typename MatrixFreeMultigridSolver<dim>::Settings;
-      using SystemOperator   = ElasticOperator<dim, degree, double>;
-      using LevelOperator    = ElasticOperator<dim, degree, number>;
-      using VectorType       = LinearAlgebra::distributed::Vector<double>;
-      using LevelVectorType  = LinearAlgebra::distributed::Vector<number>;
-      using SmootherType     = PreconditionChebyshev<LevelOperator, LevelVectorType>;
+      using Settings        = typename MatrixFreeMultigridSolver<dim>::Settings;
+      using SystemOperator  = ElasticOperator<dim, degree, double>;
+      using LevelOperator   = ElasticOperator<dim, degree, number>;
+      using VectorType      = LinearAlgebra::distributed::Vector<double>;
+      using LevelVectorType = LinearAlgebra::distributed::Vector<number>;
+      using SmootherType =
+        PreconditionChebyshev<LevelOperator, LevelVectorType>;
 
       SolverReport
       solve(const DiscreteProblem<dim>    &problem,
@@ -83,10 +84,10 @@ namespace lithostress
       TrilinosWrappers::MPI::Vector &solution,
       const Settings                &settings)
     {
-      const DoFHandler<dim> &dof_handler = problem.dof_handler;
-      const MPI_Comm         communicator = dof_handler.get_communicator();
-      const Mapping<dim>    &mapping      = problem.fe_space.mapping();
-      const Triangulation<dim> &tria      = dof_handler.get_triangulation();
+      const DoFHandler<dim>    &dof_handler  = problem.dof_handler;
+      const MPI_Comm            communicator = dof_handler.get_communicator();
+      const Mapping<dim>       &mapping      = problem.fe_space.mapping();
+      const Triangulation<dim> &tria         = dof_handler.get_triangulation();
       const std::map<types::boundary_id, double> springs =
         problem.loads.vertical_springs(tria.get_boundary_ids());
 
@@ -114,8 +115,9 @@ namespace lithostress
                             QGauss<1>(degree + 1),
                             data);
         system_operator.initialize(matrix_free);
-        system_operator.set_cell_moduli(
-          [&](const auto &cell) { return material_moduli(problem.stress_model, cell); });
+        system_operator.set_cell_moduli([&](const auto &cell) {
+          return material_moduli(problem.stress_model, cell);
+        });
         system_operator.set_vertical_springs(springs);
       }
       report.phases.emplace_back("matrix-free set-up (active mesh)",
@@ -129,7 +131,9 @@ namespace lithostress
       for (const auto &[id, mask] :
            problem.prescribed_displacement.constrained_components(
              problem.fe_space))
-        constrained_dofs.make_zero_boundary_constraints(dof_handler, {id}, mask);
+        constrained_dofs.make_zero_boundary_constraints(dof_handler,
+                                                        {id},
+                                                        mask);
 
       MGLevelObject<LevelOperator> level_operators(0, n_levels - 1);
       for (unsigned int level = 0; level < n_levels; ++level)
@@ -172,12 +176,12 @@ namespace lithostress
 
       timer.restart();
       mg::SmootherRelaxation<SmootherType, LevelVectorType> smoother;
-      MGLevelObject<typename SmootherType::AdditionalData> smoother_data(
+      MGLevelObject<typename SmootherType::AdditionalData>  smoother_data(
         0, n_levels - 1);
       for (unsigned int level = 0; level < n_levels; ++level)
         {
-          smoother_data[level].smoothing_range = settings.smoothing_range;
-          smoother_data[level].degree          = settings.smoother_degree;
+          smoother_data[level].smoothing_range     = settings.smoothing_range;
+          smoother_data[level].degree              = settings.smoother_degree;
           smoother_data[level].eig_cg_n_iterations = 12;
           smoother_data[level].preconditioner =
             level_operators[level].get_matrix_diagonal_inverse();
@@ -268,18 +272,19 @@ namespace lithostress
           solution[i] = x.local_element(k++);
         solution.compress(VectorOperation::insert);
       }
-      report.iterations     = control.last_step();
-      report.final_residual = rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
-      report.solve_time     = timer.wall_time();
+      report.iterations = control.last_step();
+      report.final_residual =
+        rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
+      report.solve_time = timer.wall_time();
       for (const auto &[phase, seconds] : clock.elapsed)
         report.phases.emplace_back("V-cycle: " + phase, seconds);
 
-      report.memory_bytes = system_operator.memory_consumption() +
-                            transfer.memory_consumption();
+      report.memory_bytes =
+        system_operator.memory_consumption() + transfer.memory_consumption();
       for (unsigned int level = 0; level < n_levels; ++level)
         report.memory_bytes += level_operators[level].memory_consumption();
-      report.memory_bytes = Utilities::MPI::sum(report.memory_bytes,
-                                                communicator);
+      report.memory_bytes =
+        Utilities::MPI::sum(report.memory_bytes, communicator);
 
       if (settings.time_matrix_vector_product)
         {
@@ -310,20 +315,20 @@ namespace lithostress
   {
     switch (fe_degree)
       {
-        case 1:
-          implementation =
-            make_implementation<dim, 1>(settings.single_precision_levels);
-          break;
-        case 2:
-          implementation =
-            make_implementation<dim, 2>(settings.single_precision_levels);
-          break;
-        case 3:
-          implementation =
-            make_implementation<dim, 3>(settings.single_precision_levels);
-          break;
-        default:
-          AssertThrow(false, ExcNotImplemented());
+      case 1:
+        implementation =
+          make_implementation<dim, 1>(settings.single_precision_levels);
+        break;
+      case 2:
+        implementation =
+          make_implementation<dim, 2>(settings.single_precision_levels);
+        break;
+      case 3:
+        implementation =
+          make_implementation<dim, 3>(settings.single_precision_levels);
+        break;
+      default:
+        AssertThrow(false, ExcNotImplemented());
       }
   }
 
@@ -358,7 +363,7 @@ namespace lithostress
 
   template <int dim>
   SolverReport
-  MatrixFreeMultigridSolver<dim>::solve(const DiscreteProblem<dim> &problem,
+  MatrixFreeMultigridSolver<dim>::solve(const DiscreteProblem<dim>    &problem,
                                         TrilinosWrappers::MPI::Vector &solution)
   {
     return implementation->solve(problem, solution, settings);

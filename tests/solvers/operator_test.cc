@@ -42,8 +42,8 @@ namespace
   LameParameters
   material_moduli(const types::material_id id)
   {
-    return id == 0 ? LameParameters{2.0e10, 3.0e10} :
-                     LameParameters{7.0e10, 1.0e10};
+    return id == 0 ? LameParameters{2.0e10, 3.0e10}
+                   : LameParameters{7.0e10, 1.0e10};
   }
 
   // Moduli varying in space (for the per-point variant): smooth, positive.
@@ -95,8 +95,9 @@ main(int argc, char **argv)
   const MappingQ<dim> mapping(2);
   DoFHandler<dim>     dof_handler(tria);
   dof_handler.distribute_dofs(fe);
-  const IndexSet owned    = dof_handler.locally_owned_dofs();
-  const IndexSet relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
+  const IndexSet owned = dof_handler.locally_owned_dofs();
+  const IndexSet relevant =
+    DoFTools::extract_locally_relevant_dofs(dof_handler);
 
   AffineConstraints<double> constraints;
   constraints.reinit(relevant);
@@ -108,7 +109,8 @@ main(int argc, char **argv)
                                            3,
                                            Functions::ZeroFunction<dim>(dim),
                                            constraints,
-                                           ComponentMask(std::vector<bool>{true, false}));
+                                           ComponentMask(
+                                             std::vector<bool>{true, false}));
   constraints.close();
 
   unsigned int failures = 0;
@@ -121,14 +123,14 @@ main(int argc, char **argv)
       pattern.compress();
       TrilinosWrappers::SparseMatrix matrix(pattern);
 
-      const QGauss<dim>     quadrature(degree + 1);
-      const QGauss<dim - 1> face_quadrature(degree + 1);
-      FEValues<dim>         fe_values(mapping,
+      const QGauss<dim>                    quadrature(degree + 1);
+      const QGauss<dim - 1>                face_quadrature(degree + 1);
+      FEValues<dim>                        fe_values(mapping,
                               fe,
                               quadrature,
                               update_gradients | update_JxW_values |
                                 update_quadrature_points);
-      FEFaceValues<dim>     face_values(mapping,
+      FEFaceValues<dim>                    face_values(mapping,
                                     fe,
                                     face_quadrature,
                                     update_values | update_normal_vectors |
@@ -145,19 +147,17 @@ main(int argc, char **argv)
             for (const unsigned int q : fe_values.quadrature_point_indices())
               {
                 const LameParameters m =
-                  at_points ?
-                    point_moduli(cell->material_id(),
-                                 fe_values.quadrature_point(q)) :
-                    material_moduli(cell->material_id());
+                  at_points ? point_moduli(cell->material_id(),
+                                           fe_values.quadrature_point(q))
+                            : material_moduli(cell->material_id());
                 for (unsigned int i = 0; i < n; ++i)
                   for (unsigned int j = 0; j < n; ++j)
                     {
                       const auto ei = fe_values[u].symmetric_gradient(i, q);
                       const auto ej = fe_values[u].symmetric_gradient(j, q);
-                      cell_matrix(i, j) +=
-                        (m.lambda * trace(ei) * trace(ej) +
-                         2 * m.mu * (ei * ej)) *
-                        fe_values.JxW(q);
+                      cell_matrix(i, j) += (m.lambda * trace(ei) * trace(ej) +
+                                            2 * m.mu * (ei * ej)) *
+                                           fe_values.JxW(q);
                     }
               }
             for (const unsigned int f : cell->face_indices())
@@ -183,8 +183,9 @@ main(int argc, char **argv)
       // The matrix-free operator on the same mesh and constraints.
       using Operator = ElasticOperator<dim, degree, double>;
       typename MatrixFree<dim, double>::AdditionalData data;
-      data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
-      data.mapping_update_flags  = update_gradients | update_JxW_values;
+      data.tasks_parallel_scheme =
+        MatrixFree<dim, double>::AdditionalData::none;
+      data.mapping_update_flags = update_gradients | update_JxW_values;
       data.mapping_update_flags_boundary_faces =
         update_values | update_normal_vectors | update_JxW_values;
       auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
@@ -198,13 +199,12 @@ main(int argc, char **argv)
                                fe,
                                quadrature,
                                update_quadrature_points);
-          op.set_point_moduli(
-            [&](const typename Operator::CellIterator &cell,
-                const unsigned int                     q) {
-              points.reinit(cell);
-              return point_moduli(cell->material_id(),
-                                  points.quadrature_point(q));
-            });
+          op.set_point_moduli([&](const typename Operator::CellIterator &cell,
+                                  const unsigned int                     q) {
+            points.reinit(cell);
+            return point_moduli(cell->material_id(),
+                                points.quadrature_point(q));
+          });
         }
       else
         op.set_cell_moduli([](const typename Operator::CellIterator &cell) {
@@ -286,11 +286,12 @@ main(int argc, char **argv)
         if (!constraints.is_constrained(i) && !masters.is_element(i))
           {
             difference =
-              std::max(difference, std::abs(diagonal(i) - matrix.diag_element(i)));
+              std::max(difference,
+                       std::abs(diagonal(i) - matrix.diag_element(i)));
             norm = std::max(norm, std::abs(matrix.diag_element(i)));
           }
-      difference = Utilities::MPI::max(difference, comm);
-      norm       = Utilities::MPI::max(norm, comm);
+      difference    = Utilities::MPI::max(difference, comm);
+      norm          = Utilities::MPI::max(norm, comm);
       const bool ok = difference <= 1e-12 * norm;
       failures += ok ? 0 : 1;
       if (rank == 0)

@@ -30,7 +30,7 @@ namespace lithostress
    */
   template <int dim, typename number>
   class CoarseGridSolver
-    : public MGCoarseGridBase<LinearAlgebra::distributed::Vector<number>>
+      : public MGCoarseGridBase<LinearAlgebra::distributed::Vector<number>>
   {
   public:
     using VectorType = LinearAlgebra::distributed::Vector<number>;

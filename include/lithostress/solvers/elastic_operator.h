@@ -43,22 +43,20 @@ namespace lithostress
    */
   template <int dim, int fe_degree, typename number>
   class ElasticOperator
-    : public MatrixFreeOperators::Base<dim,
-                                       LinearAlgebra::distributed::Vector<number>>
+      : public MatrixFreeOperators::
+          Base<dim, LinearAlgebra::distributed::Vector<number>>
   {
   public:
-    using VectorType = LinearAlgebra::distributed::Vector<number>;
-    using Base       = MatrixFreeOperators::Base<dim, VectorType>;
-    using CellIterator =
-      typename DoFHandler<dim>::cell_iterator;
+    using VectorType   = LinearAlgebra::distributed::Vector<number>;
+    using Base         = MatrixFreeOperators::Base<dim, VectorType>;
+    using CellIterator = typename DoFHandler<dim>::cell_iterator;
 
     /** Moduli of the cell @p cell (a level or active cell iterator). */
     using CellModuli = std::function<LameParameters(const CellIterator &cell)>;
 
     /** Moduli at quadrature point @p q of cell @p cell. */
-    using PointModuli =
-      std::function<LameParameters(const CellIterator &cell,
-                                   const unsigned int  q)>;
+    using PointModuli = std::function<LameParameters(const CellIterator &cell,
+                                                     const unsigned int  q)>;
 
     /** Take moduli constant per cell from @p moduli. */
     void
@@ -101,11 +99,10 @@ namespace lithostress
                      const std::pair<unsigned int, unsigned int> &range) const;
 
     void
-    local_apply_inner_face(
-      const MatrixFree<dim, number> &,
-      VectorType &,
-      const VectorType &,
-      const std::pair<unsigned int, unsigned int> &) const
+    local_apply_inner_face(const MatrixFree<dim, number> &,
+                           VectorType &,
+                           const VectorType &,
+                           const std::pair<unsigned int, unsigned int> &) const
     {
     }
 
@@ -130,10 +127,10 @@ namespace lithostress
     number
     spring_stiffness(const types::boundary_id id) const;
 
-    AlignedVector<VectorizedArray<number>>  lambda_cell, mu_cell;
-    Table<2, VectorizedArray<number>>       lambda_point, mu_point;
-    bool                                    moduli_at_points = false;
-    std::map<types::boundary_id, double>    springs;
+    AlignedVector<VectorizedArray<number>> lambda_cell, mu_cell;
+    Table<2, VectorizedArray<number>>      lambda_point, mu_point;
+    bool                                   moduli_at_points = false;
+    std::map<types::boundary_id, double>   springs;
   };
 } // namespace lithostress
 

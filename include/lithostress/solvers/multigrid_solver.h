@@ -40,7 +40,7 @@ namespace lithostress
       bool time_matrix_vector_product = false;
     };
 
-    MatrixFreeMultigridSolver(const Settings &settings,
+    MatrixFreeMultigridSolver(const Settings    &settings,
                               const unsigned int fe_degree);
     ~MatrixFreeMultigridSolver() override;
 
