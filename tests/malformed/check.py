@@ -34,6 +34,7 @@ expected = {
     "resultant_and_traction": "Resultant force",
     "resultant_one_component": "Resultant force",
     "profile_line_outside_body": "Stress-depth profiles",
+    "multigrid_for_degree_four": "Solver/Type",
 }
 files = sorted(f[:-4] for f in os.listdir(HERE) if f.endswith(".prm"))
 check(len(files) >= 10 and set(files) == set(expected), "%d malformed inputs, each with an expected message" % len(files))
