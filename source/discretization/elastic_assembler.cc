@@ -153,6 +153,15 @@ namespace lithostress
                                             const ElasticModuli<dim> &moduli,
                                             FullMatrix<double> &cell_matrix)
   {
+    add_cell_stiffness(fe_values, moduli.lame_parameters(), cell_matrix);
+  }
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::add_cell_stiffness(const FEValues<dim>  &fe_values,
+                                            const LameParameters &lame,
+                                            FullMatrix<double>   &cell_matrix)
+  {
     // Isotropic stiffness through the scalar shape gradients: each shape
     // function φ_i = N_i e_{c_i} of the primitive element has one nonzero
     // component, so
@@ -163,8 +172,8 @@ namespace lithostress
     std::vector<unsigned int> component(n);
     for (unsigned int i = 0; i < n; ++i)
       component[i] = fe.system_to_component_index(i).first % dim;
-    const double                lambda = moduli.lambda_in_plane;
-    const double                mu     = moduli.mu;
+    const double                lambda = lame.lambda;
+    const double                mu     = lame.mu;
     std::vector<Tensor<1, dim>> grad(n);
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {

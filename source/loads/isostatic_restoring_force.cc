@@ -88,21 +88,10 @@ namespace lithostress
     FullMatrix<double>               &cell_matrix,
     Vector<double> &) const
   {
-    const double        k = stiffness(id);
-    const unsigned int  n = fe_face_values.dofs_per_cell;
-    std::vector<double> phi_y(n);
-    for (const unsigned int q : fe_face_values.quadrature_point_indices())
-      {
-        const double w = k *
-                         std::abs(fe_face_values.normal_vector(q)[dim - 1]) *
-                         fe_face_values.JxW(q);
-        for (unsigned int i = 0; i < n; ++i)
-          phi_y[i] = fe_face_values[displacement].value(i, q)[dim - 1];
-        for (unsigned int i = 0; i < n; ++i)
-          if (phi_y[i] != 0)
-            for (unsigned int j = 0; j < n; ++j)
-              cell_matrix(i, j) += w * phi_y[i] * phi_y[j];
-      }
+    this->add_vertical_spring_terms(fe_face_values,
+                                    stiffness(id),
+                                    displacement,
+                                    cell_matrix);
   }
 
   template <int dim>

@@ -110,5 +110,29 @@ namespace lithostress
                    const Mapping<2> &,
                    const Point<2> &);
   template struct ModelDescription<2>;
+  template <int dim>
+  void
+  Load<dim>::add_vertical_spring_terms(
+    const FEFaceValues<dim>          &fe_face_values,
+    const double                      k,
+    const FEValuesExtractors::Vector &displacement,
+    FullMatrix<double>               &cell_matrix)
+  {
+    const unsigned int  n = fe_face_values.dofs_per_cell;
+    std::vector<double> phi_y(n);
+    for (const unsigned int q : fe_face_values.quadrature_point_indices())
+      {
+        const double w = k *
+                         std::abs(fe_face_values.normal_vector(q)[dim - 1]) *
+                         fe_face_values.JxW(q);
+        for (unsigned int i = 0; i < n; ++i)
+          phi_y[i] = fe_face_values[displacement].value(i, q)[dim - 1];
+        for (unsigned int i = 0; i < n; ++i)
+          if (phi_y[i] != 0)
+            for (unsigned int j = 0; j < n; ++j)
+              cell_matrix(i, j) += w * phi_y[i] * phi_y[j];
+      }
+  }
+
   template class Load<2>;
 } // namespace lithostress

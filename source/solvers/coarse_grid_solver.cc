@@ -6,6 +6,8 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/multigrid/mg_tools.h>
 
+#include <lithostress/discretization/elastic_assembler.h>
+#include <lithostress/loads/load.h>
 #include <lithostress/solvers/coarse_grid_solver.h>
 
 namespace lithostress
@@ -51,8 +53,6 @@ namespace lithostress
     const unsigned int                   n = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> dofs(n);
-    std::vector<SymmetricTensor<2, dim>> strain(n);
-    std::vector<double>                  divergence(n), vertical(n);
     const FEValuesExtractors::Vector     u(0);
 
     for (const auto &cell : dof_handler.mg_cell_iterators_on_level(0))
@@ -60,21 +60,9 @@ namespace lithostress
         {
           cell_matrix = 0;
           fe_values.reinit(cell);
-          const LameParameters p = moduli(cell);
-          for (const unsigned int q : fe_values.quadrature_point_indices())
-            {
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  strain[i]     = fe_values[u].symmetric_gradient(i, q);
-                  divergence[i] = trace(strain[i]);
-                }
-              for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j < n; ++j)
-                  cell_matrix(i, j) +=
-                    (p.lambda * divergence[i] * divergence[j] +
-                     2 * p.mu * (strain[i] * strain[j])) *
-                    fe_values.JxW(q);
-            }
+          ElasticAssembler<dim>::add_cell_stiffness(fe_values,
+                                                    moduli(cell),
+                                                    cell_matrix);
           for (const unsigned int f : cell->face_indices())
             if (cell->at_boundary(f))
               {
@@ -82,19 +70,10 @@ namespace lithostress
                 if (spring == springs.end())
                   continue;
                 face_values.reinit(cell, f);
-                for (const unsigned int q :
-                     face_values.quadrature_point_indices())
-                  {
-                    const double w =
-                      spring->second *
-                      std::abs(face_values.normal_vector(q)[dim - 1]) *
-                      face_values.JxW(q);
-                    for (unsigned int i = 0; i < n; ++i)
-                      vertical[i] = face_values[u].value(i, q)[dim - 1];
-                    for (unsigned int i = 0; i < n; ++i)
-                      for (unsigned int j = 0; j < n; ++j)
-                        cell_matrix(i, j) += w * vertical[i] * vertical[j];
-                  }
+                Load<dim>::add_vertical_spring_terms(face_values,
+                                                     spring->second,
+                                                     u,
+                                                     cell_matrix);
               }
           cell->get_mg_dof_indices(dofs);
           constraints.distribute_local_to_global(cell_matrix, dofs, matrix);

@@ -67,16 +67,6 @@ namespace lithostress
             const Settings                &settings) override;
     };
 
-    /** Lamé parameters of the material of @p cell. */
-    template <int dim, typename CellIterator>
-    LameParameters
-    material_moduli(const StressModel<dim> &stress_model,
-                    const CellIterator     &cell)
-    {
-      const ElasticModuli<dim> &m = stress_model.moduli(cell->material_id());
-      return {m.lambda_in_plane, m.mu};
-    }
-
     template <int dim, int degree, typename number>
     SolverReport
     MultigridImplementation<dim, degree, number>::solve(
@@ -90,6 +80,12 @@ namespace lithostress
       const Triangulation<dim> &tria         = dof_handler.get_triangulation();
       const std::map<types::boundary_id, double> springs =
         problem.loads.vertical_springs(tria.get_boundary_ids());
+
+      // Moduli of a (level or active) cell: those of its material.
+      const auto material_moduli = [&problem](const auto &cell) {
+        return problem.stress_model.moduli(cell->material_id())
+          .lame_parameters();
+      };
 
       SolverReport report;
       report.solver = "mf-gmg";
@@ -115,9 +111,7 @@ namespace lithostress
                             QGauss<1>(degree + 1),
                             data);
         system_operator.initialize(matrix_free);
-        system_operator.set_cell_moduli([&](const auto &cell) {
-          return material_moduli(problem.stress_model, cell);
-        });
+        system_operator.set_cell_moduli(material_moduli);
         system_operator.set_vertical_springs(springs);
       }
       report.phases.emplace_back("matrix-free set-up (active mesh)",
@@ -157,9 +151,7 @@ namespace lithostress
           level_operators[level].initialize(matrix_free,
                                             constrained_dofs,
                                             level);
-          level_operators[level].set_cell_moduli([&](const auto &cell) {
-            return material_moduli(problem.stress_model, cell);
-          });
+          level_operators[level].set_cell_moduli(material_moduli);
           level_operators[level].set_vertical_springs(springs);
         }
       report.phases.emplace_back("matrix-free set-up (levels)",
@@ -199,13 +191,7 @@ namespace lithostress
       timer.restart();
       CoarseGridSolver<dim, number> coarse;
       coarse.initialize(
-        dof_handler,
-        mapping,
-        constrained_dofs,
-        [&](const auto &cell) {
-          return material_moduli(problem.stress_model, cell);
-        },
-        springs);
+        dof_handler, mapping, constrained_dofs, material_moduli, springs);
       report.phases.emplace_back("coarse matrix and factorisation",
                                  timer.wall_time());
 

@@ -39,6 +39,13 @@ namespace lithostress
                        const ElasticModuli<dim> &moduli,
                        FullMatrix<double>       &cell_matrix);
 
+    /** The same for isotropic Lamé parameters @p lame (the multigrid's
+     * coarse matrix, whose moduli come per cell). */
+    static void
+    add_cell_stiffness(const FEValues<dim>  &fe_values,
+                       const LameParameters &lame,
+                       FullMatrix<double>   &cell_matrix);
+
     /**
      * Add the cell and boundary-face terms of @p load on @p cell (whose
      * values are in @p fe_values) to @p cell_matrix and @p cell_rhs; used by

@@ -151,6 +151,18 @@ namespace lithostress
       return 0;
     }
 
+    /**
+     * Add the matrix of a vertical spring of stiffness @p k on the face of
+     * @p fe_face_values, ∫ k |n_y| φ_i,y φ_j,y ds, to @p cell_matrix: the
+     * term vertical_spring_stiffness() stands for, shared by the assembly
+     * and the multigrid's coarse matrix.
+     */
+    static void
+    add_vertical_spring_terms(const FEFaceValues<dim>          &fe_face_values,
+                              const double                      k,
+                              const FEValuesExtractors::Vector &displacement,
+                              FullMatrix<double>               &cell_matrix);
+
     /** Whether all of this load's stiffness is vertical_spring_stiffness()
      * (so that a matrix-free operator can represent it). */
     virtual bool

@@ -20,6 +20,17 @@ namespace lithostress
     plane_stress
   };
 
+  /**
+   * Lamé parameters of the in-plane law σ = λ tr(ε) I + 2 μ ε at one point:
+   * λ is the plane-state λ (λ* = 2λμ/(λ + 2μ) in plane stress, SPEC §3.1).
+   * What the stiffness kernels need, per cell or per quadrature point.
+   */
+  struct LameParameters
+  {
+    double lambda = 0;
+    double mu     = 0;
+  };
+
   /** Parse "plane strain" / "plane stress". */
   PlaneState
   parse_plane_state(const std::string &text);
@@ -67,6 +78,13 @@ namespace lithostress
      */
     std::pair<double, double>
     isotropic_initial_strain_stress(const double initial_strain) const;
+
+    /** The in-plane Lamé parameters (λ_in_plane, μ). */
+    LameParameters
+    lame_parameters() const
+    {
+      return {lambda_in_plane, mu};
+    }
 
     /** Effective in-plane Lamé λ (λ or λ*) and μ. */
     double lambda_in_plane, mu;

@@ -10,7 +10,7 @@
 #include <deal.II/multigrid/mg_base.h>
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 
-#include <lithostress/solvers/elastic_operator.h>
+#include <lithostress/materials/elastic_moduli.h>
 
 #include <functional>
 #include <map>

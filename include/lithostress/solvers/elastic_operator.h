@@ -7,22 +7,14 @@
 #include <deal.II/matrix_free/matrix_free.h>
 #include <deal.II/matrix_free/operators.h>
 
+#include <lithostress/materials/elastic_moduli.h>
+
 #include <functional>
 #include <map>
 
 namespace lithostress
 {
   using namespace dealii;
-
-  /**
-   * Lamé parameters of the in-plane law σ = λ tr(ε) I + 2 μ ε at one point:
-   * λ is the plane-state λ (λ* = 2λμ/(λ + 2μ) in plane stress, SPEC §3.1).
-   */
-  struct LameParameters
-  {
-    double lambda = 0;
-    double mu     = 0;
-  };
 
   /**
    * The elasticity stiffness operator without a matrix (SPEC §3.1, thesis
