@@ -1,12 +1,33 @@
+#include <deal.II/base/timer.h>
+
 #include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/direct_solver.h>
 #include <lithostress/solvers/linear_solver.h>
 #include <lithostress/solvers/multigrid_solver.h>
 
+#include <algorithm>
+#include <limits>
+
 #include <lithostress/base/input_error.h>
 
 namespace lithostress
 {
+  double
+  fastest_of(const unsigned int           n,
+             const MPI_Comm               communicator,
+             const std::function<void()> &operation)
+  {
+    double fastest = std::numeric_limits<double>::max();
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        Timer timer(communicator, true);
+        operation();
+        timer.stop();
+        fastest = std::min(fastest, timer.wall_time());
+      }
+    return fastest;
+  }
+
   template <int dim>
   void
   LinearSolverSelector<dim>::declare_parameters(ParameterHandler &prm)

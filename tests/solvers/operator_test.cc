@@ -6,7 +6,10 @@
 // ElasticOperator with random vectors equals the product with a matrix
 // assembled here, independently, with FEValues — to round-off. Checked with
 // moduli per cell (by material) and per quadrature point (varying in space),
-// on whatever number of ranks the test is started on.
+// on whatever number of ranks the test is started on. The same on an
+// adaptively refined rectangle of non-square cells, where the operator takes
+// its fast path for axis-parallel cells (checked to be taken), with springs
+// on the base and on a vertical side (where k |n_y| vanishes).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -61,6 +64,42 @@ namespace
   // with a random vector (the check of the check below makes sure).
   const std::map<types::boundary_id, double> springs = {{1, 1.0e12},
                                                         {2, 2.0e12}};
+
+  /**
+   * The test mesh: a quarter annulus (curved cells) or a 2 x 1 rectangle of
+   * 3 x 2 non-square cells (axis-parallel cells). Boundary ids: annulus 0
+   * inner arc, 1 outer arc, 2 and 3 the straight sides; rectangle 0 left,
+   * 1 right, 2 base, 3 top. Material 1 in the outer shell / upper half.
+   * Refined twice near an interior point and near a spring boundary, so
+   * that hanging nodes sit on spring boundaries.
+   */
+  void
+  make_mesh(parallel::distributed::Triangulation<dim> &tria,
+            const bool                                 rectangle)
+  {
+    if (rectangle)
+      GridGenerator::subdivided_hyper_rectangle(
+        tria, {3, 2}, Point<dim>(0, 0), Point<dim>(2, 1), true);
+    else
+      GridGenerator::quarter_hyper_shell(tria, Point<dim>(), 1.0, 2.0, 0, true);
+    tria.refine_global(2);
+    for (const auto &cell : tria.active_cell_iterators())
+      cell->set_material_id(
+        (rectangle ? cell->center()[1] > 0.5 : cell->center().norm() > 1.5)
+          ? 1
+          : 0);
+    const Point<dim> focus =
+      rectangle ? Point<dim>(1.3, 0.6) : Point<dim>(1.3, 1.3);
+    for (unsigned int step = 0; step < 2; ++step)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              (cell->center().distance(focus) < 0.45 ||
+               cell->center()[1] < 0.25))
+            cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+  }
 } // namespace
 
 int
@@ -70,235 +109,260 @@ main(int argc, char **argv)
   const MPI_Comm                   comm = MPI_COMM_WORLD;
   const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
 
-  parallel::distributed::Triangulation<dim> tria(
-    comm,
-    Triangulation<dim>::limit_level_difference_at_vertices,
-    parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy);
-  // Boundary ids: 0 inner arc, 1 outer arc, 2 and 3 the straight sides.
-  GridGenerator::quarter_hyper_shell(tria, Point<dim>(), 1.0, 2.0, 0, true);
-  tria.refine_global(2);
-  for (const auto &cell : tria.active_cell_iterators())
-    cell->set_material_id(cell->center().norm() > 1.5 ? 1 : 0);
-  for (unsigned int step = 0; step < 2; ++step)
-    {
-      // Refine near the middle of the outer arc and near one straight side,
-      // so that hanging nodes sit on curved and straight spring boundaries.
-      for (const auto &cell : tria.active_cell_iterators())
-        if (cell->is_locally_owned() &&
-            (cell->center().distance(Point<dim>(1.3, 1.3)) < 0.45 ||
-             cell->center()[1] < 0.25))
-          cell->set_refine_flag();
-      tria.execute_coarsening_and_refinement();
-    }
-
-  const FESystem<dim> fe(FE_Q<dim>(degree), dim);
-  const MappingQ<dim> mapping(2);
-  DoFHandler<dim>     dof_handler(tria);
-  dof_handler.distribute_dofs(fe);
-  const IndexSet owned = dof_handler.locally_owned_dofs();
-  const IndexSet relevant =
-    DoFTools::extract_locally_relevant_dofs(dof_handler);
-
-  AffineConstraints<double> constraints;
-  constraints.reinit(relevant);
-  DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-  VectorTools::interpolate_boundary_values(
-    mapping, dof_handler, 0, Functions::ZeroFunction<dim>(dim), constraints);
-  VectorTools::interpolate_boundary_values(mapping,
-                                           dof_handler,
-                                           3,
-                                           Functions::ZeroFunction<dim>(dim),
-                                           constraints,
-                                           ComponentMask(
-                                             std::vector<bool>{true, false}));
-  constraints.close();
-
   unsigned int failures = 0;
-  for (const bool at_points : {false, true})
+  for (const bool rectangle : {false, true})
     {
-      // Assembled matrix, independently of the operator.
-      TrilinosWrappers::SparsityPattern pattern(owned, owned, relevant, comm);
-      DoFTools::make_sparsity_pattern(
-        dof_handler, pattern, constraints, false, rank);
-      pattern.compress();
-      TrilinosWrappers::SparseMatrix matrix(pattern);
+      parallel::distributed::Triangulation<dim> tria(
+        comm,
+        Triangulation<dim>::limit_level_difference_at_vertices,
+        parallel::distributed::Triangulation<
+          dim>::construct_multigrid_hierarchy);
+      make_mesh(tria, rectangle);
+      if (rank == 0)
+        std::cout << (rectangle ? "rectangle (axis-parallel cells):"
+                                : "quarter annulus (curved cells):")
+                  << std::endl;
 
-      const QGauss<dim>                    quadrature(degree + 1);
-      const QGauss<dim - 1>                face_quadrature(degree + 1);
-      FEValues<dim>                        fe_values(mapping,
-                              fe,
-                              quadrature,
-                              update_gradients | update_JxW_values |
-                                update_quadrature_points);
-      FEFaceValues<dim>                    face_values(mapping,
-                                    fe,
-                                    face_quadrature,
-                                    update_values | update_normal_vectors |
-                                      update_JxW_values);
-      const FEValuesExtractors::Vector     u(0);
-      const unsigned int                   n = fe.n_dofs_per_cell();
-      FullMatrix<double>                   cell_matrix(n, n);
-      std::vector<types::global_dof_index> dofs(n);
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell_matrix = 0;
-            fe_values.reinit(cell);
-            for (const unsigned int q : fe_values.quadrature_point_indices())
+      const FESystem<dim> fe(FE_Q<dim>(degree), dim);
+      const MappingQ<dim> mapping(2);
+      DoFHandler<dim>     dof_handler(tria);
+      dof_handler.distribute_dofs(fe);
+      const IndexSet owned = dof_handler.locally_owned_dofs();
+      const IndexSet relevant =
+        DoFTools::extract_locally_relevant_dofs(dof_handler);
+
+      AffineConstraints<double> constraints;
+      constraints.reinit(relevant);
+      DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+      VectorTools::interpolate_boundary_values(mapping,
+                                               dof_handler,
+                                               0,
+                                               Functions::ZeroFunction<dim>(
+                                                 dim),
+                                               constraints);
+      VectorTools::interpolate_boundary_values(
+        mapping,
+        dof_handler,
+        3,
+        Functions::ZeroFunction<dim>(dim),
+        constraints,
+        ComponentMask(std::vector<bool>{true, false}));
+      constraints.close();
+
+      for (const bool at_points : {false, true})
+        {
+          // Assembled matrix, independently of the operator.
+          TrilinosWrappers::SparsityPattern pattern(owned,
+                                                    owned,
+                                                    relevant,
+                                                    comm);
+          DoFTools::make_sparsity_pattern(
+            dof_handler, pattern, constraints, false, rank);
+          pattern.compress();
+          TrilinosWrappers::SparseMatrix matrix(pattern);
+
+          const QGauss<dim>                    quadrature(degree + 1);
+          const QGauss<dim - 1>                face_quadrature(degree + 1);
+          FEValues<dim>                        fe_values(mapping,
+                                  fe,
+                                  quadrature,
+                                  update_gradients | update_JxW_values |
+                                    update_quadrature_points);
+          FEFaceValues<dim>                    face_values(mapping,
+                                        fe,
+                                        face_quadrature,
+                                        update_values | update_normal_vectors |
+                                          update_JxW_values);
+          const FEValuesExtractors::Vector     u(0);
+          const unsigned int                   n = fe.n_dofs_per_cell();
+          FullMatrix<double>                   cell_matrix(n, n);
+          std::vector<types::global_dof_index> dofs(n);
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            if (cell->is_locally_owned())
               {
-                const LameParameters m =
-                  at_points ? point_moduli(cell->material_id(),
-                                           fe_values.quadrature_point(q))
-                            : material_moduli(cell->material_id());
-                for (unsigned int i = 0; i < n; ++i)
-                  for (unsigned int j = 0; j < n; ++j)
-                    {
-                      const auto ei = fe_values[u].symmetric_gradient(i, q);
-                      const auto ej = fe_values[u].symmetric_gradient(j, q);
-                      cell_matrix(i, j) += (m.lambda * trace(ei) * trace(ej) +
-                                            2 * m.mu * (ei * ej)) *
-                                           fe_values.JxW(q);
-                    }
-              }
-            for (const unsigned int f : cell->face_indices())
-              if (cell->at_boundary(f) &&
-                  springs.count(cell->face(f)->boundary_id()))
-                {
-                  face_values.reinit(cell, f);
-                  const double k = springs.at(cell->face(f)->boundary_id());
-                  for (const unsigned int q :
-                       face_values.quadrature_point_indices())
+                cell_matrix = 0;
+                fe_values.reinit(cell);
+                for (const unsigned int q :
+                     fe_values.quadrature_point_indices())
+                  {
+                    const LameParameters m =
+                      at_points ? point_moduli(cell->material_id(),
+                                               fe_values.quadrature_point(q))
+                                : material_moduli(cell->material_id());
                     for (unsigned int i = 0; i < n; ++i)
                       for (unsigned int j = 0; j < n; ++j)
-                        cell_matrix(i, j) +=
-                          k * std::abs(face_values.normal_vector(q)[1]) *
-                          face_values[u].value(i, q)[1] *
-                          face_values[u].value(j, q)[1] * face_values.JxW(q);
-                }
-            cell->get_dof_indices(dofs);
-            constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
+                        {
+                          const auto ei = fe_values[u].symmetric_gradient(i, q);
+                          const auto ej = fe_values[u].symmetric_gradient(j, q);
+                          cell_matrix(i, j) +=
+                            (m.lambda * trace(ei) * trace(ej) +
+                             2 * m.mu * (ei * ej)) *
+                            fe_values.JxW(q);
+                        }
+                  }
+                for (const unsigned int f : cell->face_indices())
+                  if (cell->at_boundary(f) &&
+                      springs.count(cell->face(f)->boundary_id()))
+                    {
+                      face_values.reinit(cell, f);
+                      const double k = springs.at(cell->face(f)->boundary_id());
+                      for (const unsigned int q :
+                           face_values.quadrature_point_indices())
+                        for (unsigned int i = 0; i < n; ++i)
+                          for (unsigned int j = 0; j < n; ++j)
+                            cell_matrix(i, j) +=
+                              k * std::abs(face_values.normal_vector(q)[1]) *
+                              face_values[u].value(i, q)[1] *
+                              face_values[u].value(j, q)[1] *
+                              face_values.JxW(q);
+                    }
+                cell->get_dof_indices(dofs);
+                constraints.distribute_local_to_global(cell_matrix,
+                                                       dofs,
+                                                       matrix);
+              }
+          matrix.compress(VectorOperation::add);
+
+          // The matrix-free operator on the same mesh and constraints.
+          using Operator = ElasticOperator<dim, degree, double>;
+          typename MatrixFree<dim, double>::AdditionalData data;
+          data.tasks_parallel_scheme =
+            MatrixFree<dim, double>::AdditionalData::none;
+          data.mapping_update_flags = update_gradients | update_JxW_values;
+          data.mapping_update_flags_boundary_faces =
+            update_values | update_normal_vectors | update_JxW_values;
+          auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
+          matrix_free->reinit(
+            mapping, dof_handler, constraints, QGauss<1>(degree + 1), data);
+          {
+            // Check of the check: the rectangle exercises the operator's
+            // path for axis-parallel cells, the annulus the general one.
+            unsigned int cartesian = 0;
+            for (unsigned int b = 0; b < matrix_free->n_cell_batches(); ++b)
+              cartesian += matrix_free->get_mapping_info().get_cell_type(b) ==
+                               internal::MatrixFreeFunctions::cartesian
+                             ? 1
+                             : 0;
+            const bool as_meant = rectangle
+                                    ? cartesian == matrix_free->n_cell_batches()
+                                    : cartesian < matrix_free->n_cell_batches();
+            failures += as_meant ? 0 : 1;
+            if (rank == 0 && !at_points)
+              std::cout << "axis-parallel cell batches: " << cartesian << " of "
+                        << matrix_free->n_cell_batches()
+                        << (as_meant ? "  ok" : "  FAILED") << std::endl;
           }
-      matrix.compress(VectorOperation::add);
-
-      // The matrix-free operator on the same mesh and constraints.
-      using Operator = ElasticOperator<dim, degree, double>;
-      typename MatrixFree<dim, double>::AdditionalData data;
-      data.tasks_parallel_scheme =
-        MatrixFree<dim, double>::AdditionalData::none;
-      data.mapping_update_flags = update_gradients | update_JxW_values;
-      data.mapping_update_flags_boundary_faces =
-        update_values | update_normal_vectors | update_JxW_values;
-      auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
-      matrix_free->reinit(
-        mapping, dof_handler, constraints, QGauss<1>(degree + 1), data);
-      Operator op;
-      op.initialize(matrix_free);
-      if (at_points)
-        {
-          FEValues<dim> points(mapping,
-                               fe,
-                               quadrature,
-                               update_quadrature_points);
-          op.set_point_moduli([&](const typename Operator::CellIterator &cell,
-                                  const unsigned int                     q) {
-            points.reinit(cell);
-            return point_moduli(cell->material_id(),
-                                points.quadrature_point(q));
-          });
-        }
-      else
-        op.set_cell_moduli([](const typename Operator::CellIterator &cell) {
-          return material_moduli(cell->material_id());
-        });
-      op.set_vertical_springs(springs);
-
-      std::mt19937                           random(17 + rank);
-      std::uniform_real_distribution<double> uniform(-1, 1);
-      for (unsigned int trial = 0; trial < 3; ++trial)
-        {
-          LinearAlgebra::distributed::Vector<double> x, y;
-          op.initialize_dof_vector(x);
-          op.initialize_dof_vector(y);
-          TrilinosWrappers::MPI::Vector xt(owned, comm), yt(owned, comm);
-          for (const types::global_dof_index i : owned)
-            if (!constraints.is_constrained(i))
-              {
-                const double value = uniform(random);
-                x(i)               = value;
-                xt[i]              = value;
-              }
-          xt.compress(VectorOperation::insert);
-          op.vmult(y, x);
-          matrix.vmult(yt, xt);
-          double difference = 0, norm = 0;
-          for (const types::global_dof_index i : owned)
-            if (!constraints.is_constrained(i))
-              {
-                difference = std::max(difference, std::abs(y(i) - yt[i]));
-                norm       = std::max(norm, std::abs(yt[i]));
-              }
-          difference = Utilities::MPI::max(difference, comm);
-          norm       = Utilities::MPI::max(norm, comm);
-
-          // Check of the check: the spring term matters in this product.
-          Operator without_springs;
-          without_springs.initialize(matrix_free);
-          without_springs.set_cell_moduli(
-            [](const typename Operator::CellIterator &cell) {
+          Operator op;
+          op.initialize(matrix_free);
+          if (at_points)
+            {
+              FEValues<dim> points(mapping,
+                                   fe,
+                                   quadrature,
+                                   update_quadrature_points);
+              op.set_point_moduli(
+                [&](const typename Operator::CellIterator &cell,
+                    const unsigned int                     q) {
+                  points.reinit(cell);
+                  return point_moduli(cell->material_id(),
+                                      points.quadrature_point(q));
+                });
+            }
+          else
+            op.set_cell_moduli([](const typename Operator::CellIterator &cell) {
               return material_moduli(cell->material_id());
             });
-          LinearAlgebra::distributed::Vector<double> z;
-          without_springs.initialize_dof_vector(z);
-          without_springs.vmult(z, x);
-          if (!at_points)
+          op.set_vertical_springs(springs);
+
+          std::mt19937                           random(17 + rank);
+          std::uniform_real_distribution<double> uniform(-1, 1);
+          for (unsigned int trial = 0; trial < 3; ++trial)
             {
-              z -= y;
-              const double spring_part = z.linfty_norm() / norm;
-              const bool   visible     = spring_part > 1e-2;
-              failures += visible ? 0 : 1;
+              LinearAlgebra::distributed::Vector<double> x, y;
+              op.initialize_dof_vector(x);
+              op.initialize_dof_vector(y);
+              TrilinosWrappers::MPI::Vector xt(owned, comm), yt(owned, comm);
+              for (const types::global_dof_index i : owned)
+                if (!constraints.is_constrained(i))
+                  {
+                    const double value = uniform(random);
+                    x(i)               = value;
+                    xt[i]              = value;
+                  }
+              xt.compress(VectorOperation::insert);
+              op.vmult(y, x);
+              matrix.vmult(yt, xt);
+              double difference = 0, norm = 0;
+              for (const types::global_dof_index i : owned)
+                if (!constraints.is_constrained(i))
+                  {
+                    difference = std::max(difference, std::abs(y(i) - yt[i]));
+                    norm       = std::max(norm, std::abs(yt[i]));
+                  }
+              difference = Utilities::MPI::max(difference, comm);
+              norm       = Utilities::MPI::max(norm, comm);
+
+              // Check of the check: the spring term matters in this product.
+              Operator without_springs;
+              without_springs.initialize(matrix_free);
+              without_springs.set_cell_moduli(
+                [](const typename Operator::CellIterator &cell) {
+                  return material_moduli(cell->material_id());
+                });
+              LinearAlgebra::distributed::Vector<double> z;
+              without_springs.initialize_dof_vector(z);
+              without_springs.vmult(z, x);
+              if (!at_points)
+                {
+                  z -= y;
+                  const double spring_part = z.linfty_norm() / norm;
+                  const bool   visible     = spring_part > 1e-2;
+                  failures += visible ? 0 : 1;
+                  if (rank == 0)
+                    std::cout << "springs change K x by " << spring_part
+                              << " of max |K x|"
+                              << (visible ? "  ok" : "  FAILED") << std::endl;
+                }
+              // Round-off: both sum O(100) products of O(norm) terms per row in
+              // a different order; 1e-12 is ~5000 ulp of the largest entry.
+              const bool ok = difference <= 1e-12 * norm;
+              failures += ok ? 0 : 1;
               if (rank == 0)
-                std::cout << "springs change K x by " << spring_part
-                          << " of max |K x|" << (visible ? "  ok" : "  FAILED")
+                std::cout << (at_points ? "moduli at points"
+                                        : "moduli per cell ")
+                          << ", trial " << trial << ": " << dof_handler.n_dofs()
+                          << " DoFs, max |K x - A x| / max |K x| = "
+                          << difference / norm << (ok ? "  ok" : "  FAILED")
                           << std::endl;
             }
-          // Round-off: both sum O(100) products of O(norm) terms per row in
-          // a different order; 1e-12 is ~5000 ulp of the largest entry.
+
+          // The operator's diagonal (springs included) against the matrix's,
+          // on unconstrained DoFs that no hanging-node constraint refers to.
+          op.compute_diagonal();
+          const auto &inverse = op.get_matrix_diagonal_inverse()->get_vector();
+          IndexSet    masters(dof_handler.n_dofs());
+          for (const auto &line : constraints.get_lines())
+            for (const auto &entry : line.entries)
+              masters.add_index(entry.first);
+          double difference = 0, norm = 0;
+          for (const types::global_dof_index i : owned)
+            if (!constraints.is_constrained(i) && !masters.is_element(i))
+              {
+                difference =
+                  std::max(difference,
+                           std::abs(1. / inverse(i) - matrix.diag_element(i)));
+                norm = std::max(norm, std::abs(matrix.diag_element(i)));
+              }
+          difference    = Utilities::MPI::max(difference, comm);
+          norm          = Utilities::MPI::max(norm, comm);
           const bool ok = difference <= 1e-12 * norm;
           failures += ok ? 0 : 1;
           if (rank == 0)
             std::cout << (at_points ? "moduli at points" : "moduli per cell ")
-                      << ", trial " << trial << ": " << dof_handler.n_dofs()
-                      << " DoFs, max |K x - A x| / max |K x| = "
+                      << ", diagonal: max difference / max entry = "
                       << difference / norm << (ok ? "  ok" : "  FAILED")
                       << std::endl;
         }
-
-      // The operator's diagonal (springs included) against the matrix's,
-      // on unconstrained DoFs that no hanging-node constraint refers to.
-      op.compute_diagonal();
-      const auto &diagonal = op.get_matrix_diagonal()->get_vector();
-      IndexSet    masters(dof_handler.n_dofs());
-      for (const auto &line : constraints.get_lines())
-        for (const auto &entry : line.entries)
-          masters.add_index(entry.first);
-      double difference = 0, norm = 0;
-      for (const types::global_dof_index i : owned)
-        if (!constraints.is_constrained(i) && !masters.is_element(i))
-          {
-            difference =
-              std::max(difference,
-                       std::abs(diagonal(i) - matrix.diag_element(i)));
-            norm = std::max(norm, std::abs(matrix.diag_element(i)));
-          }
-      difference    = Utilities::MPI::max(difference, comm);
-      norm          = Utilities::MPI::max(norm, comm);
-      const bool ok = difference <= 1e-12 * norm;
-      failures += ok ? 0 : 1;
-      if (rank == 0)
-        std::cout << (at_points ? "moduli at points" : "moduli per cell ")
-                  << ", diagonal: max difference / max entry = "
-                  << difference / norm << (ok ? "  ok" : "  FAILED")
-                  << std::endl;
     }
   failures = Utilities::MPI::max(failures, comm);
   if (rank == 0)

@@ -68,8 +68,8 @@ namespace lithostress
     set_vertical_springs(
       const std::map<types::boundary_id, double> &stiffness_by_boundary);
 
-    /** Diagonal of the operator (springs included), and its inverse for
-     * the Chebyshev smoother; 1 on constrained entries. */
+    /** Inverse of the operator's diagonal (springs included; 1 on
+     * constrained entries), for the Chebyshev smoother. */
     void
     compute_diagonal() override;
 
@@ -105,10 +105,19 @@ namespace lithostress
       const VectorType                            &src,
       const std::pair<unsigned int, unsigned int> &range) const;
 
-    /** The stress of the strain at every quadrature point of @p phi. */
+    /** The stress of the strain at every quadrature point of @p phi, with
+     * a fast path for axis-parallel cells with moduli per cell. */
     template <typename Evaluator>
     void
     do_cell_integral(Evaluator &phi) const;
+
+    /** The stress of the strain at the points [@p first_point, @p end_point)
+     * of @p phi, for any cell shape. */
+    template <typename Evaluator>
+    void
+    do_general_cell_integral(Evaluator         &phi,
+                             const unsigned int first_point,
+                             const unsigned int end_point) const;
 
     /** The spring traction of the displacement at every point of @p phi. */
     template <typename FaceEvaluator>

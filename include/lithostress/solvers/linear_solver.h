@@ -11,6 +11,7 @@
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/stress_model.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -26,8 +27,14 @@ namespace lithostress
     double       setup_time     = 0;
     double       solve_time     = 0;
     double       final_residual = 0;
-    /** Time of one product with the system matrix, if measured. */
+    /** Time of one product with the system matrix (or operator), if
+     * measured: the fastest of 20, which filters the machine's noise. */
     double matrix_vector_product_time = 0;
+    /** The same for the finest multigrid level's operator (in the level
+     * precision); 0 for solvers without levels. */
+    double level_matrix_vector_product_time = 0;
+    /** Wall time spent on those measurements (not part of the solve). */
+    double benchmark_time = 0;
     /** Set-up and solve time split by phase (name, seconds), for the log
      * and the benchmark: where the time goes. */
     std::vector<std::pair<std::string, double>> phases;
@@ -35,6 +42,14 @@ namespace lithostress
      * levels, preconditioner) [bytes], where it can be measured. */
     double memory_bytes = 0;
   };
+
+  /** Wall time [s] of the fastest of @p n calls of @p operation, each
+   * timed over all ranks of @p communicator (benchmark figures: the minimum
+   * filters the noise of a shared machine). */
+  double
+  fastest_of(const unsigned int           n,
+             const MPI_Comm               communicator,
+             const std::function<void()> &operation);
 
   /**
    * Everything a solver may need about the discrete elasticity problem of
