@@ -95,71 +95,76 @@ namespace lithostress
   ElasticOperator<dim, fe_degree, number>::do_cell_integral(
     Evaluator &phi) const
   {
-    const unsigned int cell                = phi.get_current_cell_index();
-    unsigned int       first_generic_point = 0;
-    if (!moduli_at_points &&
-        phi.get_cell_type() == internal::MatrixFreeFunctions::cartesian)
+    if (moduli_at_points ||
+        phi.get_cell_type() != internal::MatrixFreeFunctions::cartesian)
       {
-        // Axis-parallel cell (the flexure plate, the column, every layered
-        // box): the physical gradient is G_cd s_d with the reference
-        // gradient G and s_d = 1/h_d, and the submitted value
-        // σ_cd s_d JxW folds into four cell constants, so a point costs
-        // 4 loads, 12 multiplications and 4 stores instead of the general
-        // Jacobian products of get_gradient/submit_gradient. Point 0 takes
-        // the general path below, which also marks the gradients as
-        // submitted for deal.II's debug checks.
-        first_generic_point                  = 1;
-        const VectorizedArray<number> lambda = lambda_cell[cell];
-        const VectorizedArray<number> mu     = mu_cell[cell];
-        const Tensor<2, dim, VectorizedArray<number>> inverse_jacobian =
-          phi.inverse_jacobian(0);
-        VectorizedArray<number> s[dim];
-        for (unsigned int d = 0; d < dim; ++d)
-          s[d] = inverse_jacobian[d][d];
-        // diagonal[c][d]: coefficient of G_dd in the submitted entry (c, c)
-        // of the normal stresses; shear[c][d]: coefficient of G_cd in the
-        // submitted entries (c, d) and (d, c) of the shear stresses.
-        VectorizedArray<number> normal[dim][dim], shear[dim][dim];
+        do_general_cell_integral(phi);
+        return;
+      }
+    // Axis-parallel cell (the flexure plate, the column, every layered box)
+    // with moduli per cell: the physical gradient is G_cd s_d with the
+    // reference gradient G and s_d = 1/h_d, and the submitted value
+    // σ_cd s_d JxW folds into cell constants, so a point costs 4 loads,
+    // 12 multiplications and 4 stores instead of the general Jacobian
+    // products of get_gradient/submit_gradient.
+    const unsigned int            cell   = phi.get_current_cell_index();
+    const VectorizedArray<number> lambda = lambda_cell[cell];
+    const VectorizedArray<number> mu     = mu_cell[cell];
+    const Tensor<2, dim, VectorizedArray<number>> inverse_jacobian =
+      phi.inverse_jacobian(0);
+    VectorizedArray<number> s[dim];
+    for (unsigned int d = 0; d < dim; ++d)
+      s[d] = inverse_jacobian[d][d];
+    // normal[c][d]: coefficient of G_dd in the submitted entry (c, c);
+    // shear[c][d]: coefficient of G_cd in the submitted entries (c, d) and
+    // (d, c).
+    VectorizedArray<number> normal[dim][dim], shear[dim][dim];
+    for (unsigned int c = 0; c < dim; ++c)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          normal[c][d] = (c == d ? lambda + 2. * mu : lambda) * s[c] * s[d];
+          shear[c][d]  = mu * s[c] * s[d];
+        }
+    constexpr unsigned int   n_points  = Utilities::pow(fe_degree + 1, dim);
+    VectorizedArray<number> *gradients = phi.begin_gradients();
+#ifdef DEBUG
+    {
+      // deal.II's debug checks want submit_gradient called before
+      // integrate(); call it once and restore the values it overwrites.
+      VectorizedArray<number> saved[dim * dim];
+      for (unsigned int k = 0; k < dim * dim; ++k)
+        saved[k] = gradients[k * n_points];
+      phi.submit_gradient(Tensor<2, dim, VectorizedArray<number>>(), 0);
+      for (unsigned int k = 0; k < dim * dim; ++k)
+        gradients[k * n_points] = saved[k];
+    }
+#endif
+    for (unsigned int q = 0; q < n_points; ++q)
+      {
+        const VectorizedArray<number> JxW = phi.JxW(q);
+        VectorizedArray<number>       G[dim][dim];
         for (unsigned int c = 0; c < dim; ++c)
           for (unsigned int d = 0; d < dim; ++d)
-            {
-              normal[c][d] = (c == d ? lambda + 2. * mu : lambda) * s[c] * s[d];
-              shear[c][d]  = mu * s[c] * s[d];
-            }
-        VectorizedArray<number> *gradients = phi.begin_gradients();
-        constexpr unsigned int   n_points  = Utilities::pow(fe_degree + 1, dim);
-        for (unsigned int q = 1; q < n_points; ++q)
+            G[c][d] = gradients[(c * dim + d) * n_points + q];
+        for (unsigned int c = 0; c < dim; ++c)
           {
-            const VectorizedArray<number> JxW = phi.JxW(q);
-            VectorizedArray<number>       G[dim][dim];
-            for (unsigned int c = 0; c < dim; ++c)
-              for (unsigned int d = 0; d < dim; ++d)
-                G[c][d] = gradients[(c * dim + d) * n_points + q];
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                VectorizedArray<number> value = normal[c][0] * G[0][0];
-                for (unsigned int d = 1; d < dim; ++d)
-                  value += normal[c][d] * G[d][d];
-                gradients[(c * dim + c) * n_points + q] = value * JxW;
-                for (unsigned int d = 0; d < dim; ++d)
-                  if (d != c)
-                    gradients[(c * dim + d) * n_points + q] =
-                      (shear[d][d] * G[c][d] + shear[c][d] * G[d][c]) * JxW;
-              }
+            VectorizedArray<number> value = normal[c][0] * G[0][0];
+            for (unsigned int d = 1; d < dim; ++d)
+              value += normal[c][d] * G[d][d];
+            gradients[(c * dim + c) * n_points + q] = value * JxW;
+            for (unsigned int d = 0; d < dim; ++d)
+              if (d != c)
+                gradients[(c * dim + d) * n_points + q] =
+                  (shear[d][d] * G[c][d] + shear[c][d] * G[d][c]) * JxW;
           }
       }
-    do_general_cell_integral(phi,
-                             0,
-                             first_generic_point == 1 ? 1 : phi.n_q_points);
   }
 
   template <int dim, int fe_degree, typename number>
   template <typename Evaluator>
   void
   ElasticOperator<dim, fe_degree, number>::do_general_cell_integral(
-    Evaluator         &phi,
-    const unsigned int first_point,
-    const unsigned int end_point) const
+    Evaluator &phi) const
   {
     const unsigned int      cell   = phi.get_current_cell_index();
     VectorizedArray<number> lambda = 0, mu = 0;
@@ -168,7 +173,7 @@ namespace lithostress
         lambda = lambda_cell[cell];
         mu     = mu_cell[cell];
       }
-    for (unsigned int q = first_point; q < end_point; ++q)
+    for (const unsigned int q : phi.quadrature_point_indices())
       {
         if (moduli_at_points)
           {

@@ -111,13 +111,11 @@ namespace lithostress
     void
     do_cell_integral(Evaluator &phi) const;
 
-    /** The stress of the strain at the points [@p first_point, @p end_point)
-     * of @p phi, for any cell shape. */
+    /** The stress of the strain at every quadrature point of @p phi, for
+     * any cell shape. */
     template <typename Evaluator>
     void
-    do_general_cell_integral(Evaluator         &phi,
-                             const unsigned int first_point,
-                             const unsigned int end_point) const;
+    do_general_cell_integral(Evaluator &phi) const;
 
     /** The spring traction of the displacement at every point of @p phi. */
     template <typename FaceEvaluator>
