@@ -4,6 +4,7 @@
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/vector_memory.h>
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 #include <deal.II/multigrid/mg_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
@@ -187,6 +188,9 @@ namespace lithostress
           level_operators[level].initialize_dof_vector(v);
           smoother[level].estimate_eigenvalues(v);
         }
+      // The eigenvalue estimates' CG vectors would stay in deal.II's
+      // vector pool for the rest of the run.
+      GrowingVectorMemory<LevelVectorType>::release_unused_memory();
       report.phases.emplace_back("smoother set-up (eigenvalues)",
                                  timer.wall_time());
 
