@@ -3,12 +3,17 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/multigrid/mg_tools.h>
 
+#include <lithostress/base/input_error.h>
 #include <lithostress/discretization/elastic_assembler.h>
 #include <lithostress/loads/load.h>
 #include <lithostress/solvers/coarse_grid_solver.h>
+#include <lithostress/solvers/rigid_body_modes.h>
+
+#include <Teuchos_ParameterList.hpp>
 
 namespace lithostress
 {
@@ -16,11 +21,13 @@ namespace lithostress
   void
   CoarseGridSolver<dim, number>::initialize(
     const DoFHandler<dim>                      &dof_handler,
-    const Mapping<dim>                         &mapping,
+    const FiniteElementSpace<dim>              &fe_space,
     const MGConstrainedDoFs                    &constrained_dofs,
     const CellModuli                           &moduli,
-    const std::map<types::boundary_id, double> &springs)
+    const std::map<types::boundary_id, double> &springs,
+    const bool                                  use_amg)
   {
+    const Mapping<dim>       &mapping      = fe_space.mapping();
     const MPI_Comm            communicator = dof_handler.get_communicator();
     const FiniteElement<dim> &fe           = dof_handler.get_fe();
     owned = dof_handler.locally_owned_mg_dofs(0);
@@ -89,8 +96,36 @@ namespace lithostress
 
     x.reinit(owned, communicator);
     b.reinit(owned, communicator);
-    direct = std::make_unique<TrilinosWrappers::SolverDirect>(control);
-    direct->initialize(matrix);
+    direct.reset();
+    amg.reset();
+    if (!use_amg)
+      {
+        direct = std::make_unique<TrilinosWrappers::SolverDirect>(control);
+        direct->initialize(matrix);
+        return;
+      }
+    // The parameters of the AMG solver (AMGSolver): ML for elasticity with
+    // all rigid-body modes; the boundary rows' modes are harmless (identity
+    // rows aggregate on their own).
+    modes = make_level_rigid_body_modes(dof_handler,
+                                        fe_space,
+                                        0,
+                                        matrix.trilinos_matrix().DomainMap());
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = fe_space.degree() > 1;
+    data.smoother_sweeps       = 2;
+    data.smoother_type         = "Chebyshev";
+    data.coarse_type           = "Amesos-KLU";
+    Teuchos::ParameterList              parameters;
+    std::unique_ptr<Epetra_MultiVector> unused_modes;
+    data.set_parameters(parameters, unused_modes, matrix);
+    parameters.set("null space: type", "pre-computed");
+    parameters.set("null space: dimension", modes->NumVectors());
+    parameters.set("null space: vectors", modes->Values());
+    parameters.set("PDE equations", dim);
+    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    amg->initialize(matrix, parameters);
   }
 
   template <int dim, typename number>
@@ -102,7 +137,32 @@ namespace lithostress
     unsigned int k = 0;
     for (const types::global_dof_index i : owned)
       b[i] = src.local_element(k++);
-    direct->solve(x, b);
+    if (direct)
+      direct->solve(x, b);
+    else
+      {
+        // To 1e-8: far below the error the smoothers leave in a V-cycle,
+        // so the multigrid stays a fixed linear preconditioner for the
+        // outer CG to round-off of that size.
+        x                    = 0;
+        const double  b_norm = b.l2_norm();
+        SolverControl iteration(1000, 1e-8 * b_norm, false, false);
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(iteration);
+        if (b_norm > 0)
+          try
+            {
+              cg.solve(matrix, x, b, *amg);
+            }
+          catch (const SolverControl::NoConvergence &exc)
+            {
+              throw ComputationError(
+                "the multigrid's AMG coarse solve did not converge: "
+                "residual " +
+                std::to_string(exc.last_residual / b_norm) +
+                " (relative) after " + std::to_string(exc.last_step) +
+                " iterations; use Solver/Multigrid coarse solver = direct");
+            }
+      }
     k = 0;
     for (const types::global_dof_index i : owned)
       dst.local_element(k++) = x[i];

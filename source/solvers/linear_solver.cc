@@ -78,6 +78,14 @@ namespace lithostress
                       Patterns::Selection("single|double"),
                       "Floating-point precision of the multigrid levels "
                       "(the outer CG is always double precision).");
+    prm.declare_entry("Multigrid coarse solver",
+                      "direct",
+                      Patterns::Selection("direct|AMG"),
+                      "Solver of the multigrid's coarsest level (the coarse "
+                      "mesh): a sparse direct factorisation (Amesos KLU), or "
+                      "CG with AMG to a relative residual of 1e-8 in every "
+                      "V-cycle, for coarse meshes too large to factorise "
+                      "(tens of thousands of cells).");
     prm.declare_entry("Time matrix-vector product",
                       "false",
                       Patterns::Bool(),
@@ -134,6 +142,7 @@ namespace lithostress
         s.smoothing_range    = prm.get_double("Multigrid smoothing range");
         s.single_precision_levels =
           prm.get("Multigrid level precision") == "single";
+        s.coarse_solver_amg = prm.get("Multigrid coarse solver") == "AMG";
         s.time_matrix_vector_product =
           prm.get_bool("Time matrix-vector product");
         solver =

@@ -196,9 +196,15 @@ namespace lithostress
 
       timer.restart();
       CoarseGridSolver<dim, number> coarse;
-      coarse.initialize(
-        dof_handler, mapping, constrained_dofs, material_moduli, springs);
-      report.phases.emplace_back("coarse matrix and factorisation",
+      coarse.initialize(dof_handler,
+                        problem.fe_space,
+                        constrained_dofs,
+                        material_moduli,
+                        springs,
+                        settings.coarse_solver_amg);
+      report.phases.emplace_back(settings.coarse_solver_amg
+                                   ? "coarse matrix and AMG set-up"
+                                   : "coarse matrix and factorisation",
                                  timer.wall_time());
 
       mg::Matrix<LevelVectorType> mg_matrix(level_operators);

@@ -4,13 +4,17 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/multigrid/mg_base.h>
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 
+#include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/materials/elastic_moduli.h>
+
+#include <Epetra_MultiVector.h>
 
 #include <functional>
 #include <map>
@@ -19,14 +23,17 @@
 namespace lithostress
 {
   /**
-   * The coarsest level of the geometric multigrid solved exactly: the
-   * level-0 stiffness (the same bilinear form as ElasticOperator — cell
-   * moduli and vertical boundary springs — on the coarse mesh) assembled into
-   * a Trilinos matrix and factorised once by a sparse direct solver (Amesos
-   * KLU). The coarse mesh of a lithostress model is the generator's or the
-   * Gmsh file's mesh, a few thousand cells, so the factorisation costs
-   * milliseconds. Boundary DoFs of prescribed displacements are identity
-   * rows, as in the level operator.
+   * The coarsest level of the geometric multigrid: the level-0 stiffness
+   * (the same bilinear form as ElasticOperator — cell moduli and vertical
+   * boundary springs — on the coarse mesh) assembled into a Trilinos matrix
+   * and either factorised once by a sparse direct solver (Amesos KLU; the
+   * default: a generator's coarse mesh has a few thousand cells, so the
+   * factorisation costs milliseconds) or, for large coarse meshes (Gmsh
+   * models of tens of thousands of cells, where the factors' fill-in grows
+   * faster than the mesh), solved in every V-cycle by CG with smoothed-
+   * aggregation AMG (ML, all rigid-body modes of level 0 as near-null
+   * space) to a relative residual of 1e-8. Boundary DoFs of prescribed
+   * displacements are identity rows, as in the level operator.
    */
   template <int dim, typename number>
   class CoarseGridSolver
@@ -37,13 +44,15 @@ namespace lithostress
     using CellModuli = std::function<LameParameters(
       const typename DoFHandler<dim>::level_cell_iterator &cell)>;
 
-    /** Assemble and factorise the level-0 matrix. */
+    /** Assemble the level-0 matrix and factorise it (@p use_amg false)
+     * or set up AMG on it (@p use_amg true). */
     void
     initialize(const DoFHandler<dim>                      &dof_handler,
-               const Mapping<dim>                         &mapping,
+               const FiniteElementSpace<dim>              &fe_space,
                const MGConstrainedDoFs                    &constrained_dofs,
                const CellModuli                           &moduli,
-               const std::map<types::boundary_id, double> &springs);
+               const std::map<types::boundary_id, double> &springs,
+               const bool                                  use_amg);
 
     /** Solve the level-0 system for @p src. */
     void
@@ -62,6 +71,8 @@ namespace lithostress
     TrilinosWrappers::SparseMatrix                          matrix;
     mutable SolverControl                                   control;
     mutable std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    std::unique_ptr<Epetra_MultiVector>                     modes;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG>      amg;
     mutable TrilinosWrappers::MPI::Vector                   x, b;
     IndexSet                                                owned;
   };

@@ -15,8 +15,8 @@ namespace lithostress
    * hierarchy (local smoothing, MGTransferMatrixFree with MGConstrainedDoFs
    * for refinement edges and prescribed displacements), in single precision
    * by default; Chebyshev smoothing on the diagonal; the coarse mesh solved
-   * by a sparse direct solver (CoarseGridSolver). Needs no matrix, no
-   * sparsity pattern and no AMG set-up; stops when ‖r‖ ≤ tol ‖f‖
+   * by a sparse direct solver or by CG + AMG (CoarseGridSolver). Needs no
+   * matrix, no sparsity pattern and no AMG set-up; stops when ‖r‖ ≤ tol ‖f‖
    * (unpreconditioned residual, as the AMG solver).
    *
    * Applies to one displacement field of degree 1 to 3 whose extra
@@ -36,6 +36,8 @@ namespace lithostress
       double smoothing_range = 20;
       /** Multigrid levels in single precision inside double-precision CG. */
       bool single_precision_levels = true;
+      /** Coarse level solved by CG + AMG instead of a direct solver. */
+      bool coarse_solver_amg = false;
       /** Time operator products (for the benchmark). */
       bool time_matrix_vector_product = false;
     };

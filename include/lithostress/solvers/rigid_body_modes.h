@@ -26,6 +26,15 @@ namespace lithostress
   make_rigid_body_modes(const DoFHandler<dim>         &dof_handler,
                         const FiniteElementSpace<dim> &fe_space,
                         const Epetra_Map              &map);
+
+  /** The same on the DoFs of multigrid level @p level (numbered by
+   * DoFHandler::distribute_mg_dofs), for an AMG coarse solve. */
+  template <int dim>
+  std::unique_ptr<Epetra_MultiVector>
+  make_level_rigid_body_modes(const DoFHandler<dim>         &dof_handler,
+                              const FiniteElementSpace<dim> &fe_space,
+                              const unsigned int             level,
+                              const Epetra_Map              &map);
 } // namespace lithostress
 
 #endif
