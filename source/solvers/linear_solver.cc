@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <lithostress/base/input_error.h>
 #include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/direct_solver.h>
 #include <lithostress/solvers/linear_solver.h>
@@ -7,8 +8,6 @@
 
 #include <algorithm>
 #include <limits>
-
-#include <lithostress/base/input_error.h>
 
 namespace lithostress
 {
