@@ -32,23 +32,9 @@ namespace lithostress
     std::unique_ptr<Epetra_MultiVector> modes =
       make_rigid_body_modes(dof_handler, problem.fe_space, matrix.DomainMap());
 
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.higher_order_elements = true;
-    data.smoother_sweeps       = settings.smoother_sweeps;
-    data.aggregation_threshold = settings.aggregation_threshold;
-    data.smoother_type         = settings.smoother.c_str();
-    data.coarse_type           = "Amesos-KLU";
-    Teuchos::ParameterList              parameters;
-    std::unique_ptr<Epetra_MultiVector> unused_modes;
-    data.set_parameters(parameters, unused_modes, system.matrix);
-    parameters.set("null space: type", "pre-computed");
-    parameters.set("null space: dimension", modes->NumVectors());
-    parameters.set("null space: vectors", modes->Values());
-    parameters.set("PDE equations", dim);
-
     TrilinosWrappers::PreconditionAMG preconditioner;
-    preconditioner.initialize(system.matrix, parameters);
+    initialize_elasticity_amg<dim>(
+      preconditioner, system.matrix, *modes, settings, true);
     report.setup_time = timer.wall_time();
 
     timer.restart();
@@ -94,5 +80,36 @@ namespace lithostress
     return report;
   }
 
+  template <int dim>
+  void
+  initialize_elasticity_amg(TrilinosWrappers::PreconditionAMG       &amg,
+                            const TrilinosWrappers::SparseMatrix    &matrix,
+                            const Epetra_MultiVector                &modes,
+                            const typename AMGSolver<dim>::Settings &settings,
+                            const bool higher_order_elements)
+  {
+    TrilinosWrappers::PreconditionAMG::AdditionalData data;
+    data.elliptic              = true;
+    data.higher_order_elements = higher_order_elements;
+    data.smoother_sweeps       = settings.smoother_sweeps;
+    data.aggregation_threshold = settings.aggregation_threshold;
+    data.smoother_type         = settings.smoother.c_str();
+    data.coarse_type           = "Amesos-KLU";
+    Teuchos::ParameterList              parameters;
+    std::unique_ptr<Epetra_MultiVector> unused_modes;
+    data.set_parameters(parameters, unused_modes, matrix);
+    parameters.set("null space: type", "pre-computed");
+    parameters.set("null space: dimension", modes.NumVectors());
+    parameters.set("null space: vectors", modes.Values());
+    parameters.set("PDE equations", dim);
+    amg.initialize(matrix, parameters);
+  }
+
   template class AMGSolver<2>;
+  template void
+  initialize_elasticity_amg<2>(TrilinosWrappers::PreconditionAMG &,
+                               const TrilinosWrappers::SparseMatrix &,
+                               const Epetra_MultiVector &,
+                               const AMGSolver<2>::Settings &,
+                               const bool);
 } // namespace lithostress

@@ -10,10 +10,9 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/discretization/elastic_assembler.h>
 #include <lithostress/loads/load.h>
+#include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/coarse_grid_solver.h>
 #include <lithostress/solvers/rigid_body_modes.h>
-
-#include <Teuchos_ParameterList.hpp>
 
 namespace lithostress
 {
@@ -104,28 +103,19 @@ namespace lithostress
         direct->initialize(matrix);
         return;
       }
-    // The parameters of the AMG solver (AMGSolver): ML for elasticity with
-    // all rigid-body modes; the boundary rows' modes are harmless (identity
-    // rows aggregate on their own).
+    // ML for elasticity with the AMG solver's default settings and all
+    // rigid-body modes of level 0; the boundary rows' modes are harmless
+    // (identity rows aggregate on their own).
     modes = make_level_rigid_body_modes(dof_handler,
                                         fe_space,
                                         0,
                                         matrix.trilinos_matrix().DomainMap());
-    TrilinosWrappers::PreconditionAMG::AdditionalData data;
-    data.elliptic              = true;
-    data.higher_order_elements = fe_space.degree() > 1;
-    data.smoother_sweeps       = 2;
-    data.smoother_type         = "Chebyshev";
-    data.coarse_type           = "Amesos-KLU";
-    Teuchos::ParameterList              parameters;
-    std::unique_ptr<Epetra_MultiVector> unused_modes;
-    data.set_parameters(parameters, unused_modes, matrix);
-    parameters.set("null space: type", "pre-computed");
-    parameters.set("null space: dimension", modes->NumVectors());
-    parameters.set("null space: vectors", modes->Values());
-    parameters.set("PDE equations", dim);
-    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    amg->initialize(matrix, parameters);
+    amg   = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    initialize_elasticity_amg<dim>(*amg,
+                                   matrix,
+                                   *modes,
+                                   typename AMGSolver<dim>::Settings(),
+                                   fe_space.degree() > 1);
   }
 
   template <int dim, typename number>

@@ -5,6 +5,8 @@
 
 #include <lithostress/solvers/linear_solver.h>
 
+#include <Epetra_MultiVector.h>
+
 namespace lithostress
 {
   /**
@@ -38,6 +40,21 @@ namespace lithostress
     Settings settings;
   };
 
+  /**
+   * Set up @p amg on @p matrix as ML smoothed-aggregation AMG for
+   * elasticity: the rigid-body @p modes (make_rigid_body_modes) as the
+   * pre-computed near-null space, `elliptic`, `PDE equations` = dim, an
+   * Amesos-KLU coarse solve, and the smoother, sweeps and aggregation
+   * threshold of @p settings. Shared by AMGSolver and the multigrid's AMG
+   * coarse solve (CoarseGridSolver); @p modes must outlive @p amg's set-up.
+   */
+  template <int dim>
+  void
+  initialize_elasticity_amg(TrilinosWrappers::PreconditionAMG       &amg,
+                            const TrilinosWrappers::SparseMatrix    &matrix,
+                            const Epetra_MultiVector                &modes,
+                            const typename AMGSolver<dim>::Settings &settings,
+                            const bool higher_order_elements);
 } // namespace lithostress
 
 #endif
