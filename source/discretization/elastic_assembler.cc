@@ -1,10 +1,119 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
+#include <deal.II/lac/trilinos_index_access.h>
 
 #include <lithostress/discretization/elastic_assembler.h>
 
+#include <Epetra_CrsMatrix.h>
+
+#include <algorithm>
+
 namespace lithostress
 {
+  namespace
+  {
+    /**
+     * Adds cell matrices whose degrees of freedom are all locally owned and
+     * unconstrained (all but a thin layer of cells) straight into the Epetra
+     * rows by local index: the constraints' general path converts every
+     * global index of every entry, which costs more than computing the
+     * cell matrix. Applies when the owned indices are one contiguous range
+     * and the matrix's column map starts with them in order (Epetra's
+     * convention, checked here).
+     */
+    template <int dim>
+    class OwnedCellInsertion
+    {
+    public:
+      explicit OwnedCellInsertion(LinearSystem<dim> &system)
+          : system(system)
+          , n_owned(system.locally_owned.n_elements())
+      {
+        if (n_owned == 0 || !system.locally_owned.is_contiguous())
+          return;
+        first                     = system.locally_owned.nth_index_in_set(0);
+        const Epetra_Map &columns = system.matrix.trilinos_matrix().ColMap();
+        if (static_cast<types::global_dof_index>(columns.NumMyElements()) <
+            n_owned)
+          return;
+        for (types::global_dof_index i = 0; i < n_owned; ++i)
+          if (static_cast<types::global_dof_index>(
+                TrilinosWrappers::global_index(columns, i)) != first + i)
+            return;
+        matrix =
+          &const_cast<Epetra_CrsMatrix &>(system.matrix.trilinos_matrix());
+      }
+
+      /** Whether the cell with @p dofs can be added directly. */
+      bool
+      applies(const std::vector<types::global_dof_index> &dofs) const
+      {
+        if (matrix == nullptr)
+          return false;
+        for (const types::global_dof_index i : dofs)
+          if (i - first >= n_owned || system.constraints.is_constrained(i))
+            return false;
+        return true;
+      }
+
+      /** Add @p cell_matrix and @p cell_rhs of the cell with @p dofs. */
+      void
+      add(const std::vector<types::global_dof_index> &dofs,
+          const FullMatrix<double>                   &cell_matrix,
+          const Vector<double>                       &cell_rhs)
+      {
+        // Walk each Epetra row (sorted by FillComplete) and the cell's
+        // columns in ascending order together instead of searching for
+        // every entry; an entry not found that way is searched for.
+        const unsigned int n = dofs.size();
+        local.resize(n);
+        order.resize(n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            local[i] = static_cast<int>(dofs[i] - first);
+            order[i] = i;
+          }
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](const unsigned int x, const unsigned int y) {
+                    return local[x] < local[y];
+                  });
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            int     length;
+            double *values;
+            int    *columns;
+            matrix->ExtractMyRowView(local[i], length, values, columns);
+            int p = 0;
+            for (const unsigned int j : order)
+              {
+                while (p < length && columns[p] < local[j])
+                  ++p;
+                if (p < length && columns[p] == local[j])
+                  values[p] += cell_matrix(i, j);
+                else
+                  {
+                    const int ierr = matrix->SumIntoMyValues(local[i],
+                                                             1,
+                                                             &cell_matrix(i, j),
+                                                             &local[j]);
+                    AssertThrow(ierr == 0, ExcTrilinosError(ierr));
+                  }
+              }
+          }
+        system.rhs.add(dofs, cell_rhs);
+      }
+
+    private:
+      LinearSystem<dim>        &system;
+      types::global_dof_index   n_owned;
+      types::global_dof_index   first  = 0;
+      Epetra_CrsMatrix         *matrix = nullptr;
+      std::vector<int>          local;
+      std::vector<unsigned int> order;
+    };
+  } // namespace
+
   template <int dim>
   ElasticAssembler<dim>::ElasticAssembler(
     const FiniteElementSpace<dim> &fe_space,
@@ -81,6 +190,9 @@ namespace lithostress
     if (with_matrix)
       system.matrix = 0;
     system.rhs = 0;
+    std::unique_ptr<OwnedCellInsertion<dim>> direct;
+    if (with_matrix)
+      direct = std::make_unique<OwnedCellInsertion<dim>>(system);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -124,7 +236,9 @@ namespace lithostress
                            cell_matrix,
                            cell_rhs);
 
-          if (with_matrix)
+          if (with_matrix && direct->applies(dofs))
+            direct->add(dofs, cell_matrix, cell_rhs);
+          else if (with_matrix)
             system.constraints.distribute_local_to_global(
               cell_matrix, cell_rhs, dofs, system.matrix, system.rhs);
           else if (inhomogeneous)

@@ -26,10 +26,8 @@ namespace lithostress
     const std::map<types::boundary_id, double> &springs,
     const bool                                  use_amg)
   {
-    const Mapping<dim>       &mapping      = fe_space.mapping();
-    const MPI_Comm            communicator = dof_handler.get_communicator();
-    const FiniteElement<dim> &fe           = dof_handler.get_fe();
-    owned = dof_handler.locally_owned_mg_dofs(0);
+    const MPI_Comm communicator = dof_handler.get_communicator();
+    owned                       = dof_handler.locally_owned_mg_dofs(0);
     const IndexSet relevant =
       DoFTools::extract_locally_relevant_level_dofs(dof_handler, 0);
 
@@ -46,6 +44,98 @@ namespace lithostress
                                                relevant);
     matrix.reinit(owned, owned, pattern, communicator);
 
+    assemble(
+      dof_handler.mg_cell_iterators_on_level(0),
+      [](const auto &cell, std::vector<types::global_dof_index> &dofs) {
+        if (!cell->is_locally_owned_on_level())
+          return false;
+        cell->get_mg_dof_indices(dofs);
+        return true;
+      },
+      dof_handler.get_fe(),
+      fe_space.mapping(),
+      constraints,
+      moduli,
+      springs,
+      constrained_dofs.get_boundary_indices(0));
+    set_up_solver(
+      use_amg
+        ? make_level_rigid_body_modes(
+            dof_handler, fe_space, 0, matrix.trilinos_matrix().DomainMap())
+        : nullptr,
+      fe_space.degree() > 1,
+      use_amg);
+  }
+
+  template <int dim, typename number>
+  void
+  CoarseGridSolver<dim, number>::initialize(
+    const DoFHandler<dim>                      &dof_handler,
+    const FiniteElementSpace<dim>              &fe_space,
+    const AffineConstraints<double>            &constraints,
+    const CellModuli                           &moduli,
+    const std::map<types::boundary_id, double> &springs,
+    const bool                                  use_amg)
+  {
+    const MPI_Comm communicator = dof_handler.get_communicator();
+    owned                       = dof_handler.locally_owned_dofs();
+    const IndexSet relevant =
+      DoFTools::extract_locally_relevant_dofs(dof_handler);
+
+    IndexSet constrained(dof_handler.n_dofs());
+    for (const auto &line : constraints.get_lines())
+      {
+        AssertThrow(line.entries.empty(),
+                    ExcMessage("The coarse mesh of the multigrid has hanging "
+                               "nodes."));
+        constrained.add_index(line.index);
+      }
+    constrained.compress();
+
+    DynamicSparsityPattern pattern(relevant);
+    DoFTools::make_sparsity_pattern(dof_handler, pattern, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(pattern,
+                                               owned,
+                                               communicator,
+                                               relevant);
+    matrix.reinit(owned, owned, pattern, communicator);
+
+    assemble(
+      dof_handler.active_cell_iterators(),
+      [](const auto &cell, std::vector<types::global_dof_index> &dofs) {
+        if (!cell->is_locally_owned())
+          return false;
+        cell->get_dof_indices(dofs);
+        return true;
+      },
+      dof_handler.get_fe(),
+      fe_space.mapping(),
+      constraints,
+      moduli,
+      springs,
+      constrained);
+    set_up_solver(
+      use_amg ? make_rigid_body_modes(dof_handler,
+                                      fe_space,
+                                      matrix.trilinos_matrix().DomainMap())
+              : nullptr,
+      fe_space.degree() > 1,
+      use_amg);
+  }
+
+  template <int dim, typename number>
+  template <typename CellRange, typename DoFIndices>
+  void
+  CoarseGridSolver<dim, number>::assemble(
+    const CellRange                            &cells,
+    const DoFIndices                           &dof_indices,
+    const FiniteElement<dim>                   &fe,
+    const Mapping<dim>                         &mapping,
+    const AffineConstraints<double>            &constraints,
+    const CellModuli                           &moduli,
+    const std::map<types::boundary_id, double> &springs,
+    const IndexSet                             &identity_rows)
+  {
     const unsigned int                   n_points = fe.degree + 1;
     FEValues<dim>                        fe_values(mapping,
                             fe,
@@ -61,8 +151,8 @@ namespace lithostress
     std::vector<types::global_dof_index> dofs(n);
     const FEValuesExtractors::Vector     u(0);
 
-    for (const auto &cell : dof_handler.mg_cell_iterators_on_level(0))
-      if (cell->is_locally_owned_on_level())
+    for (const auto &cell : cells)
+      if (dof_indices(cell, dofs))
         {
           cell_matrix = 0;
           fe_values.reinit(cell);
@@ -81,22 +171,30 @@ namespace lithostress
                                                      u,
                                                      cell_matrix);
               }
-          cell->get_mg_dof_indices(dofs);
           constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
         }
     matrix.compress(VectorOperation::add);
 
     // Identity on the boundary rows, as the level operator has.
-    for (const types::global_dof_index i :
-         constrained_dofs.get_boundary_indices(0))
+    for (const types::global_dof_index i : identity_rows)
       if (owned.is_element(i))
         matrix.set(i, i, 1.);
     matrix.compress(VectorOperation::insert);
+  }
 
+  template <int dim, typename number>
+  void
+  CoarseGridSolver<dim, number>::set_up_solver(
+    std::unique_ptr<Epetra_MultiVector> rigid_body_modes,
+    const bool                          higher_order,
+    const bool                          use_amg)
+  {
+    const MPI_Comm communicator = matrix.get_mpi_communicator();
     x.reinit(owned, communicator);
     b.reinit(owned, communicator);
     direct.reset();
     amg.reset();
+    modes = std::move(rigid_body_modes);
     if (!use_amg)
       {
         direct = std::make_unique<TrilinosWrappers::SolverDirect>(control);
@@ -104,18 +202,11 @@ namespace lithostress
         return;
       }
     // ML for elasticity with the AMG solver's default settings and all
-    // rigid-body modes of level 0; the boundary rows' modes are harmless
-    // (identity rows aggregate on their own).
-    modes = make_level_rigid_body_modes(dof_handler,
-                                        fe_space,
-                                        0,
-                                        matrix.trilinos_matrix().DomainMap());
-    amg   = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-    initialize_elasticity_amg<dim>(*amg,
-                                   matrix,
-                                   *modes,
-                                   typename AMGSolver<dim>::Settings(),
-                                   fe_space.degree() > 1);
+    // rigid-body modes of the coarse mesh; the boundary rows' modes are
+    // harmless (identity rows aggregate on their own).
+    amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    initialize_elasticity_amg<dim>(
+      *amg, matrix, *modes, typename AMGSolver<dim>::Settings(), higher_order);
   }
 
   template <int dim, typename number>

@@ -85,6 +85,18 @@ namespace lithostress
                       "CG with AMG to a relative residual of 1e-8 in every "
                       "V-cycle, for coarse meshes too large to factorise "
                       "(tens of thousands of cells).");
+    prm.declare_entry("Multigrid hierarchy",
+                      "local smoothing",
+                      Patterns::Selection("local smoothing|global coarsening"),
+                      "Levels of the multigrid: the levels of the refined "
+                      "mesh's cell hierarchy, smoothed only where they are "
+                      "refined (local smoothing, with edge terms at "
+                      "refinement edges), or a sequence of meshes each "
+                      "coarsened once globally from the one above (global "
+                      "coarsening: every level covers the whole domain, "
+                      "hanging nodes on the levels). The same answer to the "
+                      "solver tolerance; see doc/performance.md for when "
+                      "each is faster.");
     prm.declare_entry("Time matrix-vector product",
                       "false",
                       Patterns::Bool(),
@@ -105,8 +117,11 @@ namespace lithostress
   {
     prm.enter_subsection("Solver");
     const std::string type = prm.get("Type");
+    const bool        local_smoothing =
+      prm.get("Multigrid hierarchy") == "local smoothing";
     prm.leave_subsection();
-    return type == "automatic" || type == "matrix-free multigrid";
+    return (type == "automatic" || type == "matrix-free multigrid") &&
+           local_smoothing;
   }
 
   template <int dim>
@@ -142,6 +157,8 @@ namespace lithostress
         s.single_precision_levels =
           prm.get("Multigrid level precision") == "single";
         s.coarse_solver_amg = prm.get("Multigrid coarse solver") == "AMG";
+        s.global_coarsening =
+          prm.get("Multigrid hierarchy") == "global coarsening";
         s.time_matrix_vector_product =
           prm.get_bool("Time matrix-vector product");
         solver =

@@ -1,20 +1,15 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
-#include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/vector_memory.h>
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 #include <deal.II/multigrid/mg_matrix.h>
-#include <deal.II/multigrid/mg_smoother.h>
 #include <deal.II/multigrid/mg_transfer_matrix_free.h>
-#include <deal.II/multigrid/multigrid.h>
 
 #include <lithostress/base/input_error.h>
 #include <lithostress/solvers/coarse_grid_solver.h>
-#include <lithostress/solvers/elastic_operator.h>
-#include <lithostress/solvers/multigrid_solver.h>
+#include <lithostress/solvers/multigrid_preconditioner.h>
 
 #include <map>
 
@@ -22,106 +17,83 @@ namespace lithostress
 {
   namespace
   {
-    /** Accumulates wall time of the multigrid phases through the signals of
-     * deal.II's Multigrid class. */
-    class PhaseClock
-    {
-    public:
-      PhaseClock(const MPI_Comm communicator)
-          : timer(communicator, false)
-      {
-      }
-
-      std::function<void(const bool, const unsigned int)>
-      slot(const std::string &phase)
-      {
-        return [this, phase](const bool start, const unsigned int) {
-          if (start)
-            timer.restart();
-          else
-            elapsed[phase] += timer.wall_time();
-        };
-      }
-
-      std::map<std::string, double> elapsed;
-
-    private:
-      Timer timer;
-    };
-
+    /** The V-cycle of local smoothing on the levels of the p4est forest
+     * (step-37/step-50): MGTransferMatrixFree with MGConstrainedDoFs for
+     * refinement edges and prescribed displacements, edge matrices at
+     * refinement edges, the level-0 matrix solved by CoarseGridSolver. */
     template <int dim, int degree, typename number>
-    class MultigridImplementation
-        : public MatrixFreeMultigridSolver<dim>::Implementation
+    class LocalSmoothingPreconditioner
+        : public MultigridPreconditioner<dim, degree, number>
     {
     public:
-      using Settings        = typename MatrixFreeMultigridSolver<dim>::Settings;
-      using SystemOperator  = ElasticOperator<dim, degree, double>;
-      using LevelOperator   = ElasticOperator<dim, degree, number>;
-      using VectorType      = LinearAlgebra::distributed::Vector<double>;
-      using LevelVectorType = LinearAlgebra::distributed::Vector<number>;
+      using Base            = MultigridPreconditioner<dim, degree, number>;
+      using VectorType      = typename Base::VectorType;
+      using LevelVectorType = typename Base::LevelVectorType;
+      using LevelOperator   = typename Base::LevelOperator;
       using SmootherType =
         PreconditionChebyshev<LevelOperator, LevelVectorType>;
+      using Settings = typename MatrixFreeMultigridSolver<dim>::Settings;
 
-      SolverReport
-      solve(const DiscreteProblem<dim>    &problem,
-            TrilinosWrappers::MPI::Vector &solution,
-            const Settings                &settings) override;
+      LocalSmoothingPreconditioner(const DiscreteProblem<dim> &problem,
+                                   const Settings             &settings,
+                                   SolverReport               &report);
+
+      void
+      vmult(VectorType &dst, const VectorType &src) const override
+      {
+        preconditioner->vmult(dst, src);
+      }
+
+      std::map<std::string, double>
+      cycle_phases() const override
+      {
+        return clock.elapsed;
+      }
+
+      std::size_t
+      memory_consumption() const override;
+
+      double
+      time_finest_level_product() override;
+
+    private:
+      const DoFHandler<dim>                                &dof_handler;
+      MGConstrainedDoFs                                     constrained_dofs;
+      MGLevelObject<LevelOperator>                          level_operators;
+      MGTransferMatrixFree<dim, number>                     transfer;
+      mg::SmootherRelaxation<SmootherType, LevelVectorType> smoother;
+      CoarseGridSolver<dim, number>                         coarse;
+      mg::Matrix<LevelVectorType>                           mg_matrix;
+      MGLevelObject<MatrixFreeOperators::MGInterfaceOperator<LevelOperator>>
+                                                  interface_operators;
+      mg::Matrix<LevelVectorType>                 mg_interface;
+      std::unique_ptr<Multigrid<LevelVectorType>> multigrid;
+      std::unique_ptr<
+        PreconditionMG<dim, LevelVectorType, MGTransferMatrixFree<dim, number>>>
+                                  preconditioner;
+      multigrid_tools::PhaseClock clock;
     };
 
     template <int dim, int degree, typename number>
-    SolverReport
-    MultigridImplementation<dim, degree, number>::solve(
-      const DiscreteProblem<dim>    &problem,
-      TrilinosWrappers::MPI::Vector &solution,
-      const Settings                &settings)
+    LocalSmoothingPreconditioner<dim, degree, number>::
+      LocalSmoothingPreconditioner(const DiscreteProblem<dim> &problem,
+                                   const Settings             &settings,
+                                   SolverReport               &report)
+        : dof_handler(problem.dof_handler)
+        , clock(problem.dof_handler.get_communicator())
     {
-      const DoFHandler<dim>    &dof_handler  = problem.dof_handler;
       const MPI_Comm            communicator = dof_handler.get_communicator();
       const Mapping<dim>       &mapping      = problem.fe_space.mapping();
       const Triangulation<dim> &tria         = dof_handler.get_triangulation();
       const std::map<types::boundary_id, double> springs =
         problem.loads.vertical_springs(tria.get_boundary_ids());
-
-      // Moduli of a (level or active) cell: those of its material.
       const auto material_moduli = [&problem](const auto &cell) {
         return problem.stress_model.moduli(cell->material_id())
           .lame_parameters();
       };
 
-      SolverReport report;
-      report.solver = "mf-gmg";
-      Timer timer(communicator, true), total(communicator, true);
-
-      // The operator on the active mesh (double precision).
-      const auto flags = [&springs](auto &data) {
-        data.tasks_parallel_scheme =
-          std::remove_reference_t<decltype(data)>::none;
-        data.mapping_update_flags = update_gradients | update_JxW_values;
-        if (!springs.empty())
-          data.mapping_update_flags_boundary_faces =
-            update_values | update_normal_vectors | update_JxW_values;
-      };
-      SystemOperator system_operator;
-      {
-        typename MatrixFree<dim, double>::AdditionalData data;
-        flags(data);
-        auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
-        matrix_free->reinit(mapping,
-                            dof_handler,
-                            problem.system.constraints,
-                            QGauss<1>(degree + 1),
-                            data);
-        system_operator.initialize(matrix_free);
-        system_operator.set_cell_moduli(material_moduli);
-        system_operator.set_vertical_springs(springs);
-      }
-      report.phases.emplace_back("matrix-free set-up (active mesh)",
-                                 timer.wall_time());
-
-      // The level operators.
-      timer.restart();
+      Timer              timer(communicator, true);
       const unsigned int n_levels = tria.n_global_levels();
-      MGConstrainedDoFs  constrained_dofs;
       constrained_dofs.initialize(dof_handler);
       for (const auto &[id, mask] :
            problem.prescribed_displacement.constrained_components(
@@ -130,7 +102,7 @@ namespace lithostress
                                                         {id},
                                                         mask);
 
-      MGLevelObject<LevelOperator> level_operators(0, n_levels - 1);
+      level_operators.resize(0, n_levels - 1);
       for (unsigned int level = 0; level < n_levels; ++level)
         {
           AffineConstraints<double> level_constraints;
@@ -141,7 +113,7 @@ namespace lithostress
           level_constraints.close();
 
           typename MatrixFree<dim, number>::AdditionalData data;
-          flags(data);
+          multigrid_tools::set_operator_flags(data, springs);
           data.mg_level    = level;
           auto matrix_free = std::make_shared<MatrixFree<dim, number>>();
           matrix_free->reinit(mapping,
@@ -163,39 +135,16 @@ namespace lithostress
       report.phases.emplace_back("level diagonals", timer.wall_time());
 
       timer.restart();
-      MGTransferMatrixFree<dim, number> transfer(constrained_dofs);
+      transfer.initialize_constraints(constrained_dofs);
       transfer.build(dof_handler);
       report.phases.emplace_back("transfer set-up", timer.wall_time());
 
       timer.restart();
-      mg::SmootherRelaxation<SmootherType, LevelVectorType> smoother;
-      MGLevelObject<typename SmootherType::AdditionalData>  smoother_data(
-        0, n_levels - 1);
-      for (unsigned int level = 0; level < n_levels; ++level)
-        {
-          smoother_data[level].smoothing_range = settings.smoothing_range;
-          smoother_data[level].degree          = settings.smoother_degree;
-          // deal.II's default: the same V-cycle iteration counts as 12
-          // Lanczos steps on every test and benchmark, at 2/3 the cost.
-          smoother_data[level].eig_cg_n_iterations = 8;
-          smoother_data[level].preconditioner =
-            level_operators[level].get_matrix_diagonal_inverse();
-        }
-      smoother.initialize(level_operators, smoother_data);
-      for (unsigned int level = 1; level < n_levels; ++level)
-        {
-          LevelVectorType v;
-          level_operators[level].initialize_dof_vector(v);
-          smoother[level].estimate_eigenvalues(v);
-        }
-      // The eigenvalue estimates' CG vectors would stay in deal.II's
-      // vector pool for the rest of the run.
-      GrowingVectorMemory<LevelVectorType>::release_unused_memory();
+      multigrid_tools::set_up_chebyshev(smoother, level_operators, settings);
       report.phases.emplace_back("smoother set-up (eigenvalues)",
                                  timer.wall_time());
 
       timer.restart();
-      CoarseGridSolver<dim, number> coarse;
       coarse.initialize(dof_handler,
                         problem.fe_space,
                         constrained_dofs,
@@ -207,26 +156,118 @@ namespace lithostress
                                    : "coarse matrix and factorisation",
                                  timer.wall_time());
 
-      mg::Matrix<LevelVectorType> mg_matrix(level_operators);
-      MGLevelObject<MatrixFreeOperators::MGInterfaceOperator<LevelOperator>>
-        interface_operators(0, n_levels - 1);
+      mg_matrix.initialize(level_operators);
+      interface_operators.resize(0, n_levels - 1);
       for (unsigned int level = 0; level < n_levels; ++level)
         interface_operators[level].initialize(level_operators[level]);
-      mg::Matrix<LevelVectorType> mg_interface(interface_operators);
-
-      Multigrid<LevelVectorType> multigrid(
+      mg_interface.initialize(interface_operators);
+      multigrid = std::make_unique<Multigrid<LevelVectorType>>(
         mg_matrix, coarse, transfer, smoother, smoother);
-      multigrid.set_edge_matrices(mg_interface, mg_interface);
-      PhaseClock clock(communicator);
-      multigrid.connect_pre_smoother_step(clock.slot("smoothing"));
-      multigrid.connect_post_smoother_step(clock.slot("smoothing"));
-      multigrid.connect_residual_step(clock.slot("level residuals"));
-      multigrid.connect_restriction(clock.slot("transfer"));
-      multigrid.connect_prolongation(clock.slot("transfer"));
-      multigrid.connect_edge_prolongation(clock.slot("transfer"));
-      multigrid.connect_coarse_solve(clock.slot("coarse solve"));
-      PreconditionMG<dim, LevelVectorType, MGTransferMatrixFree<dim, number>>
-        preconditioner(dof_handler, multigrid, transfer);
+      multigrid->set_edge_matrices(mg_interface, mg_interface);
+      clock.connect(*multigrid);
+      preconditioner =
+        std::make_unique<PreconditionMG<dim,
+                                        LevelVectorType,
+                                        MGTransferMatrixFree<dim, number>>>(
+          dof_handler, *multigrid, transfer);
+    }
+
+    template <int dim, int degree, typename number>
+    std::size_t
+    LocalSmoothingPreconditioner<dim, degree, number>::memory_consumption()
+      const
+    {
+      std::size_t bytes = transfer.memory_consumption();
+      for (unsigned int level = level_operators.min_level();
+           level <= level_operators.max_level();
+           ++level)
+        bytes += level_operators[level].memory_consumption();
+      return bytes;
+    }
+
+    template <int dim, int degree, typename number>
+    double
+    LocalSmoothingPreconditioner<dim, degree, number>::
+      time_finest_level_product()
+    {
+      // On the V-cycle's vectors of the finest level, which the solve has
+      // finished with: the measurement does not raise the peak memory.
+      const unsigned int top = level_operators.max_level();
+      LevelVectorType   &x   = multigrid->defect[top];
+      LevelVectorType   &y   = multigrid->solution[top];
+      if (x.size() == 0)
+        {
+          level_operators[top].initialize_dof_vector(x);
+          level_operators[top].initialize_dof_vector(y);
+        }
+      x = 1.;
+      return fastest_of(20, dof_handler.get_communicator(), [&]() {
+        level_operators[top].vmult(y, x);
+      });
+    }
+
+    /** The outer CG on the active mesh with either hierarchy. */
+    template <int dim, int degree, typename number>
+    class MultigridImplementation
+        : public MatrixFreeMultigridSolver<dim>::Implementation
+    {
+    public:
+      using Settings       = typename MatrixFreeMultigridSolver<dim>::Settings;
+      using SystemOperator = ElasticOperator<dim, degree, double>;
+      using VectorType     = LinearAlgebra::distributed::Vector<double>;
+
+      SolverReport
+      solve(const DiscreteProblem<dim>    &problem,
+            TrilinosWrappers::MPI::Vector &solution,
+            const Settings                &settings) override;
+    };
+
+    template <int dim, int degree, typename number>
+    SolverReport
+    MultigridImplementation<dim, degree, number>::solve(
+      const DiscreteProblem<dim>    &problem,
+      TrilinosWrappers::MPI::Vector &solution,
+      const Settings                &settings)
+    {
+      const DoFHandler<dim> &dof_handler  = problem.dof_handler;
+      const MPI_Comm         communicator = dof_handler.get_communicator();
+      const std::map<types::boundary_id, double> springs =
+        problem.loads.vertical_springs(
+          dof_handler.get_triangulation().get_boundary_ids());
+
+      SolverReport report;
+      report.solver = "mf-gmg";
+      Timer timer(communicator, true), total(communicator, true);
+
+      // The operator on the active mesh (double precision).
+      SystemOperator system_operator;
+      {
+        typename MatrixFree<dim, double>::AdditionalData data;
+        multigrid_tools::set_operator_flags(data, springs);
+        auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
+        matrix_free->reinit(problem.fe_space.mapping(),
+                            dof_handler,
+                            problem.system.constraints,
+                            QGauss<1>(degree + 1),
+                            data);
+        system_operator.initialize(matrix_free);
+        system_operator.set_cell_moduli([&problem](const auto &cell) {
+          return problem.stress_model.moduli(cell->material_id())
+            .lame_parameters();
+        });
+        system_operator.set_vertical_springs(springs);
+      }
+      report.phases.emplace_back("matrix-free set-up (active mesh)",
+                                 timer.wall_time());
+
+      const std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
+        preconditioner =
+          settings.global_coarsening
+            ? make_global_coarsening_preconditioner<dim, degree, number>(
+                problem, settings, report)
+            : make_local_smoothing_preconditioner<dim, degree, number>(problem,
+                                                                       settings,
+                                                                       report);
       report.setup_time = total.wall_time();
 
       // Solve in the matrix-free vector layout (same owned DoFs).
@@ -252,7 +293,7 @@ namespace lithostress
           SolverCG<VectorType> cg(control);
           try
             {
-              cg.solve(system_operator, x, rhs, preconditioner);
+              cg.solve(system_operator, x, rhs, *preconditioner);
             }
           catch (const SolverControl::NoConvergence &exc)
             {
@@ -274,15 +315,14 @@ namespace lithostress
       report.final_residual =
         rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
       report.solve_time = timer.wall_time();
-      for (const auto &[phase, seconds] : clock.elapsed)
+      for (const auto &[phase, seconds] : preconditioner->cycle_phases())
         report.phases.emplace_back("V-cycle: " + phase, seconds);
 
       report.memory_bytes =
-        system_operator.memory_consumption() + transfer.memory_consumption();
-      for (unsigned int level = 0; level < n_levels; ++level)
-        report.memory_bytes += level_operators[level].memory_consumption();
-      report.memory_bytes =
-        Utilities::MPI::sum(report.memory_bytes, communicator);
+        Utilities::MPI::sum(static_cast<double>(
+                              system_operator.memory_consumption() +
+                              preconditioner->memory_consumption()),
+                            communicator);
 
       if (settings.time_matrix_vector_product)
         {
@@ -293,18 +333,8 @@ namespace lithostress
             fastest_of(20, communicator, [&]() {
               system_operator.vmult(x, rhs);
             });
-          LevelVectorType &level_x = multigrid.defect[n_levels - 1];
-          LevelVectorType &level_y = multigrid.solution[n_levels - 1];
-          if (level_x.size() == 0)
-            {
-              level_operators[n_levels - 1].initialize_dof_vector(level_x);
-              level_operators[n_levels - 1].initialize_dof_vector(level_y);
-            }
-          level_x = 1.;
           report.level_matrix_vector_product_time =
-            fastest_of(20, communicator, [&]() {
-              level_operators[n_levels - 1].vmult(level_y, level_x);
-            });
+            preconditioner->time_finest_level_product();
           report.benchmark_time = benchmark.wall_time();
         }
       return report;
@@ -319,6 +349,17 @@ namespace lithostress
       return std::make_unique<MultigridImplementation<dim, degree, double>>();
     }
   } // namespace
+
+  template <int dim, int degree, typename number>
+  std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
+  make_local_smoothing_preconditioner(
+    const DiscreteProblem<dim>                              &problem,
+    const typename MatrixFreeMultigridSolver<dim>::Settings &settings,
+    SolverReport                                            &report)
+  {
+    return std::make_unique<LocalSmoothingPreconditioner<dim, degree, number>>(
+      problem, settings, report);
+  }
 
   template <int dim>
   MatrixFreeMultigridSolver<dim>::MatrixFreeMultigridSolver(
@@ -371,7 +412,9 @@ namespace lithostress
   MatrixFreeMultigridSolver<dim>::prepare_dof_handler(
     DoFHandler<dim> &dof_handler) const
   {
-    dof_handler.distribute_mg_dofs();
+    // Global coarsening builds its own meshes and DoF handlers per level.
+    if (!settings.global_coarsening)
+      dof_handler.distribute_mg_dofs();
   }
 
   template <int dim>

@@ -120,6 +120,41 @@ its_direct = [n for _, _, n in iterations(outs["direct"])]
 check(all(abs(a - b) <= 1 for a, b in zip(its, its_direct)),
       "flexure: iterations with the AMG coarse solve %s, with the direct one %s" % (its, its_direct))
 
+# Global coarsening against local smoothing: the same errors (both solve to
+# 1e-12, as above), on 1 and 2 ranks, and h-independent iteration counts.
+# The L-shaped domain runs 16 of its cycles: deal.II 9.4 with 32-bit cell
+# indices numbers the cells of all levels of the coarsening sequence in 32
+# bits (3 coarse cells x (4^17 - 1)/3 > 2^32 once the mesh has 17 levels,
+# in cycle 20), which must give a clear error, not a crash.
+GC = "Solver/Multigrid hierarchy=global coarsening"
+for name, prm, sets in (("cantilever", "cantilever/cantilever.prm", []),
+                        ("l_shaped", "l_shaped/l_shaped_adaptive.prm",
+                         ["Mesh refinement/Number of cycles=16"])):
+    rows_ls = table(os.path.abspath("output_mg_" + name))
+    counts_ls = [n for _, _, n in iterations(os.path.abspath("output_mg_" + name))]
+    for ranks in (1, 2):
+        out = os.path.abspath("output_gc_%s_%d" % (name, ranks))
+        run(prm, out, ranks, sets + [MG, GC, "Output/Write ParaView files=false"])
+        rows = table(out)
+        worst = max(abs(a[c] - b[c]) / b[c] for a, b in zip(rows, rows_ls)
+                    for c in ("L2(u)", "energy", "L2(stress)"))
+        check(len(rows) <= len(rows_ls) and all(a["dofs"] == b["dofs"] for a, b in zip(rows, rows_ls))
+              and worst <= 1e-3,
+              "%s, %d rank(s): errors with global coarsening equal local smoothing's over %d cycles "
+              "(max relative difference %.1e)" % (name, ranks, len(rows), worst))
+        counts = [n for _, _, n in iterations(out)]
+        check(max(counts[1:]) - min(counts[1:]) <= 4,
+              "%s, %d rank(s): global-coarsening iterations %s (local smoothing %s) stay within +-2"
+              % (name, ranks, counts, counts_ls[:len(counts)]))
+out = os.path.abspath("output_gc_too_many_levels")
+result = run("l_shaped/l_shaped_adaptive.prm", out, 1, [MG, GC, "Output/Write ParaView files=false"],
+             expect_success=False)
+text = result.stdout + result.stderr
+check(result.returncode != 0 and "Multigrid hierarchy = local smoothing" in text
+      and "Stacktrace" not in text and "cycle 19:" in open(os.path.join(out, "log.txt")).read(),
+      "l_shaped: global coarsening stops with a clear error when the mesh reaches 17 levels, after "
+      "cycle 19 (exit %d)" % result.returncode)
+
 # Iteration counts, h-independence.
 runs = [
     ("cantilever", "cantilever/cantilever.prm", [], 1),

@@ -3,6 +3,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -41,15 +42,29 @@ namespace lithostress
   {
   public:
     using VectorType = LinearAlgebra::distributed::Vector<number>;
+    /** Moduli of a cell (level-0 or active). */
     using CellModuli = std::function<LameParameters(
-      const typename DoFHandler<dim>::level_cell_iterator &cell)>;
+      const typename Triangulation<dim>::cell_iterator &cell)>;
 
-    /** Assemble the level-0 matrix and factorise it (@p use_amg false)
-     * or set up AMG on it (@p use_amg true). */
+    /** Assemble the level-0 matrix of the local-smoothing hierarchy of
+     * @p dof_handler (DoFs numbered by distribute_mg_dofs) and factorise
+     * it (@p use_amg false) or set up AMG on it (@p use_amg true). */
     void
     initialize(const DoFHandler<dim>                      &dof_handler,
                const FiniteElementSpace<dim>              &fe_space,
                const MGConstrainedDoFs                    &constrained_dofs,
+               const CellModuli                           &moduli,
+               const std::map<types::boundary_id, double> &springs,
+               const bool                                  use_amg);
+
+    /** The same on the active cells of @p dof_handler, the coarse mesh of
+     * a global-coarsening hierarchy, with the homogeneous prescribed
+     * displacements in @p constraints (no hanging nodes: a coarse mesh has
+     * none). */
+    void
+    initialize(const DoFHandler<dim>                      &dof_handler,
+               const FiniteElementSpace<dim>              &fe_space,
+               const AffineConstraints<double>            &constraints,
                const CellModuli                           &moduli,
                const std::map<types::boundary_id, double> &springs,
                const bool                                  use_amg);
@@ -68,6 +83,26 @@ namespace lithostress
     }
 
   private:
+    /** Add the stiffness of the locally owned cells in @p cells (whose DoF
+     * indices @p dof_indices gives) to the matrix through @p constraints,
+     * then make the rows of @p identity_rows identity rows. */
+    template <typename CellRange, typename DoFIndices>
+    void
+    assemble(const CellRange                            &cells,
+             const DoFIndices                           &dof_indices,
+             const FiniteElement<dim>                   &fe,
+             const Mapping<dim>                         &mapping,
+             const AffineConstraints<double>            &constraints,
+             const CellModuli                           &moduli,
+             const std::map<types::boundary_id, double> &springs,
+             const IndexSet                             &identity_rows);
+
+    /** Factorise the matrix, or set up AMG with the rigid-body @p modes. */
+    void
+    set_up_solver(std::unique_ptr<Epetra_MultiVector> rigid_body_modes,
+                  const bool                          higher_order,
+                  const bool                          use_amg);
+
     TrilinosWrappers::SparseMatrix                          matrix;
     mutable SolverControl                                   control;
     mutable std::unique_ptr<TrilinosWrappers::SolverDirect> direct;

@@ -118,7 +118,8 @@ namespace lithostress
     declare_parameters(ParameterHandler &prm);
 
     /** Whether the triangulation must keep its multigrid hierarchy: the
-     * `Type` may select the multigrid (read before the mesh is built). */
+     * `Type` may select the multigrid with local smoothing (read before the
+     * mesh is built). */
     static bool
     may_use_multigrid(ParameterHandler &prm);
 

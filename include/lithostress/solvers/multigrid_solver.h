@@ -38,6 +38,8 @@ namespace lithostress
       bool single_precision_levels = true;
       /** Coarse level solved by CG + AMG instead of a direct solver. */
       bool coarse_solver_amg = false;
+      /** Levels by global coarsening instead of local smoothing. */
+      bool global_coarsening = false;
       /** Time operator products (for the benchmark). */
       bool time_matrix_vector_product = false;
     };

@@ -1,0 +1,178 @@
+#ifndef lithostress_solvers_multigrid_preconditioner_h
+#define lithostress_solvers_multigrid_preconditioner_h
+
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/vector_memory.h>
+#include <deal.II/matrix_free/matrix_free.h>
+#include <deal.II/multigrid/mg_smoother.h>
+#include <deal.II/multigrid/multigrid.h>
+
+#include <lithostress/solvers/elastic_operator.h>
+#include <lithostress/solvers/linear_solver.h>
+#include <lithostress/solvers/multigrid_solver.h>
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace lithostress
+{
+  /**
+   * One V-cycle of a geometric multigrid for the elasticity operator, as
+   * the preconditioner of the outer double-precision CG: the part in which
+   * the two hierarchies of MatrixFreeMultigridSolver differ (local
+   * smoothing on the levels of the p4est forest, or global coarsening on a
+   * sequence of coarsened meshes). Level operators are ElasticOperator in
+   * precision @p number.
+   */
+  template <int dim, int degree, typename number>
+  class MultigridPreconditioner
+  {
+  public:
+    using VectorType      = LinearAlgebra::distributed::Vector<double>;
+    using LevelVectorType = LinearAlgebra::distributed::Vector<number>;
+    using LevelOperator   = ElasticOperator<dim, degree, number>;
+
+    virtual ~MultigridPreconditioner() = default;
+
+    /** Apply one V-cycle to @p src. */
+    virtual void
+    vmult(VectorType &dst, const VectorType &src) const = 0;
+
+    /** Wall time of the V-cycle phases accumulated so far. */
+    virtual std::map<std::string, double>
+    cycle_phases() const = 0;
+
+    /** Memory of the level operators and transfers [bytes]. */
+    virtual std::size_t
+    memory_consumption() const = 0;
+
+    /** Wall time of one product with the finest level's operator, the
+     * fastest of 20 (benchmark). */
+    virtual double
+    time_finest_level_product() = 0;
+  };
+
+  /** The local-smoothing hierarchy (MGTransferMatrixFree with
+   * MGConstrainedDoFs and edge matrices) of the levels of @p problem's mesh;
+   * set-up phases go to @p report. */
+  template <int dim, int degree, typename number>
+  std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
+  make_local_smoothing_preconditioner(
+    const DiscreteProblem<dim>                              &problem,
+    const typename MatrixFreeMultigridSolver<dim>::Settings &settings,
+    SolverReport                                            &report);
+
+  /** The global-coarsening hierarchy (MGTransferGlobalCoarsening) of the
+   * meshes obtained by coarsening @p problem's mesh globally, down to the
+   * coarse mesh; set-up phases go to @p report. */
+  template <int dim, int degree, typename number>
+  std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
+  make_global_coarsening_preconditioner(
+    const DiscreteProblem<dim>                              &problem,
+    const typename MatrixFreeMultigridSolver<dim>::Settings &settings,
+    SolverReport                                            &report);
+
+  namespace multigrid_tools
+  {
+    /** Accumulates wall time of the multigrid phases through the signals
+     * of deal.II's Multigrid class. */
+    class PhaseClock
+    {
+    public:
+      explicit PhaseClock(const MPI_Comm communicator)
+          : timer(communicator, false)
+      {
+      }
+
+      /** A slot for Multigrid's signal of @p phase. */
+      std::function<void(const bool, const unsigned int)>
+      slot(const std::string &phase)
+      {
+        return [this, phase](const bool start, const unsigned int) {
+          if (start)
+            timer.restart();
+          else
+            elapsed[phase] += timer.wall_time();
+        };
+      }
+
+      /** Connect the slots to the phases of @p multigrid. */
+      template <typename VectorType>
+      void
+      connect(Multigrid<VectorType> &multigrid)
+      {
+        multigrid.connect_pre_smoother_step(slot("smoothing"));
+        multigrid.connect_post_smoother_step(slot("smoothing"));
+        multigrid.connect_residual_step(slot("level residuals"));
+        multigrid.connect_restriction(slot("transfer"));
+        multigrid.connect_prolongation(slot("transfer"));
+        multigrid.connect_edge_prolongation(slot("transfer"));
+        multigrid.connect_coarse_solve(slot("coarse solve"));
+      }
+
+      std::map<std::string, double> elapsed;
+
+    private:
+      Timer timer;
+    };
+
+    /** MatrixFree flags of the elasticity operator: gradients and JxW in
+     * cells, values, normals and JxW on boundary faces if there are
+     * @p springs. */
+    template <typename AdditionalData>
+    void
+    set_operator_flags(AdditionalData                             &data,
+                       const std::map<types::boundary_id, double> &springs)
+    {
+      data.tasks_parallel_scheme = AdditionalData::none;
+      data.mapping_update_flags  = update_gradients | update_JxW_values;
+      if (!springs.empty())
+        data.mapping_update_flags_boundary_faces =
+          update_values | update_normal_vectors | update_JxW_values;
+    }
+
+    /** Chebyshev smoothers on the inverse diagonals of @p operators, with
+     * their eigenvalue estimates (levels above 0). */
+    template <typename Operator, typename VectorType, typename Settings>
+    void
+    set_up_chebyshev(
+      mg::SmootherRelaxation<PreconditionChebyshev<Operator, VectorType>,
+                             VectorType> &smoother,
+      const MGLevelObject<Operator>      &operators,
+      const Settings                     &settings)
+    {
+      using Smoother = PreconditionChebyshev<Operator, VectorType>;
+      MGLevelObject<typename Smoother::AdditionalData> data(
+        operators.min_level(), operators.max_level());
+      for (unsigned int level = operators.min_level();
+           level <= operators.max_level();
+           ++level)
+        {
+          data[level].smoothing_range = settings.smoothing_range;
+          data[level].degree          = settings.smoother_degree;
+          // deal.II's default: the same V-cycle iteration counts as 12
+          // Lanczos steps on every test and benchmark, at 2/3 the cost.
+          data[level].eig_cg_n_iterations = 8;
+          data[level].preconditioner =
+            operators[level].get_matrix_diagonal_inverse();
+        }
+      smoother.initialize(operators, data);
+      for (unsigned int level = operators.min_level() + 1;
+           level <= operators.max_level();
+           ++level)
+        {
+          VectorType v;
+          operators[level].initialize_dof_vector(v);
+          smoother[level].estimate_eigenvalues(v);
+        }
+      // The eigenvalue estimates' CG vectors would stay in deal.II's
+      // vector pool for the rest of the run.
+      GrowingVectorMemory<VectorType>::release_unused_memory();
+    }
+  } // namespace multigrid_tools
+} // namespace lithostress
+
+#endif
