@@ -458,6 +458,14 @@ namespace lithostress
         assemble_system();
         solve();
         postprocess(cycle);
+        // The table so far, after every cycle: a run stopped by an error
+        // in a later cycle keeps the cycles it finished.
+        if (!study.empty() &&
+            Utilities::MPI::this_mpi_process(communicator) == 0)
+          {
+            std::ofstream csv(output_directory + "/convergence.csv");
+            study.write_csv(csv);
+          }
         TimerOutput::Scope t(*timer, "output");
         if (!solution_output.last_only || cycle + 1 == refinement.n_cycles)
           solution_output.write(output_directory,
@@ -476,11 +484,6 @@ namespace lithostress
         log << "\nConvergence table (rates in DoFs; for errors "
                "rate = -dlog(e)/dlog(N)):\n"
             << table.str();
-        if (Utilities::MPI::this_mpi_process(communicator) == 0)
-          {
-            std::ofstream csv(output_directory + "/convergence.csv");
-            study.write_csv(csv);
-          }
       }
     if (with_force_balance)
       {
