@@ -58,10 +58,18 @@ namespace lithostress
       }
 
       std::size_t
-      memory_consumption() const override;
+      memory_consumption() const override
+      {
+        return transfer->memory_consumption() +
+               multigrid_tools::memory_consumption(level_operators);
+      }
 
       double
-      time_finest_level_product() override;
+      time_finest_level_product() override
+      {
+        return multigrid_tools::time_finest_level_product(
+          level_operators, *multigrid, dof_handler.get_communicator());
+      }
 
     private:
       const DoFHandler<dim>                                  &dof_handler;
@@ -215,37 +223,6 @@ namespace lithostress
           dof_handler, *multigrid, *transfer);
     }
 
-    template <int dim, int degree, typename number>
-    std::size_t
-    GlobalCoarseningPreconditioner<dim, degree, number>::memory_consumption()
-      const
-    {
-      std::size_t bytes = transfer->memory_consumption();
-      for (unsigned int level = level_operators.min_level();
-           level <= level_operators.max_level();
-           ++level)
-        bytes += level_operators[level].memory_consumption();
-      return bytes;
-    }
-
-    template <int dim, int degree, typename number>
-    double
-    GlobalCoarseningPreconditioner<dim, degree, number>::
-      time_finest_level_product()
-    {
-      const unsigned int top = level_operators.max_level();
-      LevelVectorType   &x   = multigrid->defect[top];
-      LevelVectorType   &y   = multigrid->solution[top];
-      if (x.size() == 0)
-        {
-          level_operators[top].initialize_dof_vector(x);
-          level_operators[top].initialize_dof_vector(y);
-        }
-      x = 1.;
-      return fastest_of(20, dof_handler.get_communicator(), [&]() {
-        level_operators[top].vmult(y, x);
-      });
-    }
   } // namespace
 
   template <int dim, int degree, typename number>

@@ -172,6 +172,43 @@ namespace lithostress
       // vector pool for the rest of the run.
       GrowingVectorMemory<VectorType>::release_unused_memory();
     }
+
+    /** Memory of the level operators [bytes]. */
+    template <typename Operator>
+    std::size_t
+    memory_consumption(const MGLevelObject<Operator> &operators)
+    {
+      std::size_t bytes = 0;
+      for (unsigned int level = operators.min_level();
+           level <= operators.max_level();
+           ++level)
+        bytes += operators[level].memory_consumption();
+      return bytes;
+    }
+
+    /** Wall time of one product with the finest level's operator, the
+     * fastest of 20, on the V-cycle's vectors of that level (which the
+     * solve has finished with: the measurement does not raise the peak
+     * memory). */
+    template <typename Operator, typename VectorType>
+    double
+    time_finest_level_product(const MGLevelObject<Operator> &operators,
+                              Multigrid<VectorType>         &multigrid,
+                              const MPI_Comm                 communicator)
+    {
+      const unsigned int top = operators.max_level();
+      VectorType        &x   = multigrid.defect[top];
+      VectorType        &y   = multigrid.solution[top];
+      if (x.size() == 0)
+        {
+          operators[top].initialize_dof_vector(x);
+          operators[top].initialize_dof_vector(y);
+        }
+      x = 1.;
+      return fastest_of(20, communicator, [&]() {
+        operators[top].vmult(y, x);
+      });
+    }
   } // namespace multigrid_tools
 } // namespace lithostress
 
