@@ -29,64 +29,35 @@ namespace lithostress
      */
     template <int dim, int degree, typename number>
     class GlobalCoarseningPreconditioner
-        : public MultigridPreconditioner<dim, degree, number>
+        : public MultigridCycle<dim,
+                                degree,
+                                number,
+                                MGTransferGlobalCoarsening<
+                                  dim,
+                                  LinearAlgebra::distributed::Vector<number>>>
     {
     public:
-      using Base            = MultigridPreconditioner<dim, degree, number>;
-      using VectorType      = typename Base::VectorType;
-      using LevelVectorType = typename Base::LevelVectorType;
-      using LevelOperator   = typename Base::LevelOperator;
-      using SmootherType =
-        PreconditionChebyshev<LevelOperator, LevelVectorType>;
-      using Transfer = MGTransferGlobalCoarsening<dim, LevelVectorType>;
-      using Settings = typename MatrixFreeMultigridSolver<dim>::Settings;
+      using LevelVectorType = LinearAlgebra::distributed::Vector<number>;
+      using Transfer        = MGTransferGlobalCoarsening<dim, LevelVectorType>;
+      using Cycle           = MultigridCycle<dim, degree, number, Transfer>;
+      using Settings        = typename Cycle::Settings;
 
       GlobalCoarseningPreconditioner(const DiscreteProblem<dim> &problem,
                                      const Settings             &settings,
                                      SolverReport               &report);
 
-      void
-      vmult(VectorType &dst, const VectorType &src) const override
+      ~GlobalCoarseningPreconditioner() override
       {
-        preconditioner->vmult(dst, src);
-      }
-
-      std::map<std::string, double>
-      cycle_phases() const override
-      {
-        return clock.elapsed;
-      }
-
-      std::size_t
-      memory_consumption() const override
-      {
-        return transfer->memory_consumption() +
-               multigrid_tools::memory_consumption(level_operators);
-      }
-
-      double
-      time_finest_level_product() override
-      {
-        return multigrid_tools::time_finest_level_product(
-          level_operators, *multigrid, dof_handler.get_communicator());
+        this->release_cycle();
       }
 
     private:
-      const DoFHandler<dim>                                  &dof_handler;
       std::vector<std::shared_ptr<const Triangulation<dim>>>  triangulations;
       std::vector<std::unique_ptr<DoFHandler<dim>>>           coarser_dofs;
       std::vector<const DoFHandler<dim> *>                    level_dofs;
       MGLevelObject<AffineConstraints<number>>                constraints;
-      MGLevelObject<LevelOperator>                            level_operators;
       MGLevelObject<MGTwoLevelTransfer<dim, LevelVectorType>> transfers;
       std::unique_ptr<Transfer>                               transfer;
-      mg::SmootherRelaxation<SmootherType, LevelVectorType>   smoother;
-      CoarseGridSolver<dim, number>                           coarse;
-      mg::Matrix<LevelVectorType>                             mg_matrix;
-      std::unique_ptr<Multigrid<LevelVectorType>>             multigrid;
-      std::unique_ptr<PreconditionMG<dim, LevelVectorType, Transfer>>
-                                  preconditioner;
-      multigrid_tools::PhaseClock clock;
     };
 
     template <int dim, int degree, typename number>
@@ -94,18 +65,16 @@ namespace lithostress
       GlobalCoarseningPreconditioner(const DiscreteProblem<dim> &problem,
                                      const Settings             &settings,
                                      SolverReport               &report)
-        : dof_handler(problem.dof_handler)
-        , clock(problem.dof_handler.get_communicator())
+        : Cycle(problem.dof_handler)
     {
+      const DoFHandler<dim>    &dof_handler     = this->dof_handler;
+      auto                     &level_operators = this->level_operators;
       const MPI_Comm            communicator = dof_handler.get_communicator();
       const Mapping<dim>       &mapping      = problem.fe_space.mapping();
       const Triangulation<dim> &tria         = dof_handler.get_triangulation();
       const std::map<types::boundary_id, double> springs =
         problem.loads.vertical_springs(tria.get_boundary_ids());
-      const auto material_moduli = [&problem](const auto &cell) {
-        return problem.stress_model.moduli(cell->material_id())
-          .lame_parameters();
-      };
+      const auto material_moduli = multigrid_tools::material_moduli(problem);
       const auto prescribed =
         problem.prescribed_displacement.constrained_components(
           problem.fe_space);
@@ -148,7 +117,6 @@ namespace lithostress
                                  timer.wall_time());
 
       timer.restart();
-      AffineConstraints<double> coarse_constraints;
       constraints.resize(0, n_levels - 1);
       level_operators.resize(0, n_levels - 1);
       for (unsigned int level = 0; level < n_levels; ++level)
@@ -165,8 +133,6 @@ namespace lithostress
                                                      mask);
           level_constraints.close();
           constraints[level].copy_from(level_constraints);
-          if (level == 0)
-            coarse_constraints.copy_from(level_constraints);
 
           typename MatrixFree<dim, number>::AdditionalData data;
           multigrid_tools::set_operator_flags(data, springs);
@@ -193,36 +159,24 @@ namespace lithostress
                                                    constraints[level - 1]);
       transfer = std::make_unique<Transfer>(
         transfers, [this](const unsigned int level, LevelVectorType &v) {
-          level_operators[level].initialize_dof_vector(v);
+          this->level_operators[level].initialize_dof_vector(v);
         });
       report.phases.emplace_back("transfer set-up", timer.wall_time());
 
-      timer.restart();
-      multigrid_tools::set_up_chebyshev(smoother, level_operators, settings);
-      report.phases.emplace_back("smoother set-up (eigenvalues)",
-                                 timer.wall_time());
-
-      timer.restart();
-      coarse.initialize(*level_dofs[0],
-                        problem.fe_space,
-                        coarse_constraints,
-                        material_moduli,
-                        springs,
-                        settings.coarse_solver_amg);
-      report.phases.emplace_back(settings.coarse_solver_amg
-                                   ? "coarse matrix and AMG set-up"
-                                   : "coarse matrix and factorisation",
-                                 timer.wall_time());
-
-      mg_matrix.initialize(level_operators);
-      multigrid = std::make_unique<Multigrid<LevelVectorType>>(
-        mg_matrix, coarse, *transfer, smoother, smoother);
-      clock.connect(*multigrid);
-      preconditioner =
-        std::make_unique<PreconditionMG<dim, LevelVectorType, Transfer>>(
-          dof_handler, *multigrid, *transfer);
+      AffineConstraints<double> coarse_constraints;
+      coarse_constraints.copy_from(constraints[0]);
+      this->set_up_cycle(*transfer,
+                         settings,
+                         report,
+                         [&](CoarseGridSolver<dim, number> &coarse) {
+                           coarse.initialize(*level_dofs[0],
+                                             problem.fe_space,
+                                             coarse_constraints,
+                                             material_moduli,
+                                             springs,
+                                             settings.coarse_solver_amg);
+                         });
     }
-
   } // namespace
 
   template <int dim, int degree, typename number>

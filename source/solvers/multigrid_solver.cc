@@ -23,63 +23,33 @@ namespace lithostress
      * refinement edges, the level-0 matrix solved by CoarseGridSolver. */
     template <int dim, int degree, typename number>
     class LocalSmoothingPreconditioner
-        : public MultigridPreconditioner<dim, degree, number>
+        : public MultigridCycle<dim,
+                                degree,
+                                number,
+                                MGTransferMatrixFree<dim, number>>
     {
     public:
-      using Base            = MultigridPreconditioner<dim, degree, number>;
-      using VectorType      = typename Base::VectorType;
-      using LevelVectorType = typename Base::LevelVectorType;
-      using LevelOperator   = typename Base::LevelOperator;
-      using SmootherType =
-        PreconditionChebyshev<LevelOperator, LevelVectorType>;
-      using Settings = typename MatrixFreeMultigridSolver<dim>::Settings;
+      using Cycle =
+        MultigridCycle<dim, degree, number, MGTransferMatrixFree<dim, number>>;
+      using LevelVectorType = typename Cycle::LevelVectorType;
+      using LevelOperator   = typename Cycle::LevelOperator;
+      using Settings        = typename Cycle::Settings;
 
       LocalSmoothingPreconditioner(const DiscreteProblem<dim> &problem,
                                    const Settings             &settings,
                                    SolverReport               &report);
 
-      void
-      vmult(VectorType &dst, const VectorType &src) const override
+      ~LocalSmoothingPreconditioner() override
       {
-        preconditioner->vmult(dst, src);
-      }
-
-      std::map<std::string, double>
-      cycle_phases() const override
-      {
-        return clock.elapsed;
-      }
-
-      std::size_t
-      memory_consumption() const override
-      {
-        return transfer.memory_consumption() +
-               multigrid_tools::memory_consumption(level_operators);
-      }
-
-      double
-      time_finest_level_product() override
-      {
-        return multigrid_tools::time_finest_level_product(
-          level_operators, *multigrid, dof_handler.get_communicator());
+        this->release_cycle();
       }
 
     private:
-      const DoFHandler<dim>                                &dof_handler;
-      MGConstrainedDoFs                                     constrained_dofs;
-      MGLevelObject<LevelOperator>                          level_operators;
-      MGTransferMatrixFree<dim, number>                     transfer;
-      mg::SmootherRelaxation<SmootherType, LevelVectorType> smoother;
-      CoarseGridSolver<dim, number>                         coarse;
-      mg::Matrix<LevelVectorType>                           mg_matrix;
+      MGConstrainedDoFs                 constrained_dofs;
+      MGTransferMatrixFree<dim, number> transfer;
       MGLevelObject<MatrixFreeOperators::MGInterfaceOperator<LevelOperator>>
-                                                  interface_operators;
-      mg::Matrix<LevelVectorType>                 mg_interface;
-      std::unique_ptr<Multigrid<LevelVectorType>> multigrid;
-      std::unique_ptr<
-        PreconditionMG<dim, LevelVectorType, MGTransferMatrixFree<dim, number>>>
-                                  preconditioner;
-      multigrid_tools::PhaseClock clock;
+                                  interface_operators;
+      mg::Matrix<LevelVectorType> mg_interface;
     };
 
     template <int dim, int degree, typename number>
@@ -87,20 +57,16 @@ namespace lithostress
       LocalSmoothingPreconditioner(const DiscreteProblem<dim> &problem,
                                    const Settings             &settings,
                                    SolverReport               &report)
-        : dof_handler(problem.dof_handler)
-        , clock(problem.dof_handler.get_communicator())
+        : Cycle(problem.dof_handler)
     {
-      const MPI_Comm            communicator = dof_handler.get_communicator();
-      const Mapping<dim>       &mapping      = problem.fe_space.mapping();
-      const Triangulation<dim> &tria         = dof_handler.get_triangulation();
+      const DoFHandler<dim>    &dof_handler     = this->dof_handler;
+      auto                     &level_operators = this->level_operators;
+      const Triangulation<dim> &tria = dof_handler.get_triangulation();
       const std::map<types::boundary_id, double> springs =
         problem.loads.vertical_springs(tria.get_boundary_ids());
-      const auto material_moduli = [&problem](const auto &cell) {
-        return problem.stress_model.moduli(cell->material_id())
-          .lame_parameters();
-      };
+      const auto material_moduli = multigrid_tools::material_moduli(problem);
 
-      Timer              timer(communicator, true);
+      Timer              timer(dof_handler.get_communicator(), true);
       const unsigned int n_levels = tria.n_global_levels();
       constrained_dofs.initialize(dof_handler);
       for (const auto &[id, mask] :
@@ -124,7 +90,7 @@ namespace lithostress
           multigrid_tools::set_operator_flags(data, springs);
           data.mg_level    = level;
           auto matrix_free = std::make_shared<MatrixFree<dim, number>>();
-          matrix_free->reinit(mapping,
+          matrix_free->reinit(problem.fe_space.mapping(),
                               dof_handler,
                               level_constraints,
                               QGauss<1>(degree + 1),
@@ -147,37 +113,22 @@ namespace lithostress
       transfer.build(dof_handler);
       report.phases.emplace_back("transfer set-up", timer.wall_time());
 
-      timer.restart();
-      multigrid_tools::set_up_chebyshev(smoother, level_operators, settings);
-      report.phases.emplace_back("smoother set-up (eigenvalues)",
-                                 timer.wall_time());
-
-      timer.restart();
-      coarse.initialize(dof_handler,
-                        problem.fe_space,
-                        constrained_dofs,
-                        material_moduli,
-                        springs,
-                        settings.coarse_solver_amg);
-      report.phases.emplace_back(settings.coarse_solver_amg
-                                   ? "coarse matrix and AMG set-up"
-                                   : "coarse matrix and factorisation",
-                                 timer.wall_time());
-
-      mg_matrix.initialize(level_operators);
+      this->set_up_cycle(transfer,
+                         settings,
+                         report,
+                         [&](CoarseGridSolver<dim, number> &coarse) {
+                           coarse.initialize(dof_handler,
+                                             problem.fe_space,
+                                             constrained_dofs,
+                                             material_moduli,
+                                             springs,
+                                             settings.coarse_solver_amg);
+                         });
       interface_operators.resize(0, n_levels - 1);
       for (unsigned int level = 0; level < n_levels; ++level)
         interface_operators[level].initialize(level_operators[level]);
       mg_interface.initialize(interface_operators);
-      multigrid = std::make_unique<Multigrid<LevelVectorType>>(
-        mg_matrix, coarse, transfer, smoother, smoother);
-      multigrid->set_edge_matrices(mg_interface, mg_interface);
-      clock.connect(*multigrid);
-      preconditioner =
-        std::make_unique<PreconditionMG<dim,
-                                        LevelVectorType,
-                                        MGTransferMatrixFree<dim, number>>>(
-          dof_handler, *multigrid, transfer);
+      this->multigrid->set_edge_matrices(mg_interface, mg_interface);
     }
 
     /** The outer CG on the active mesh with either hierarchy. */
@@ -225,10 +176,8 @@ namespace lithostress
                             QGauss<1>(degree + 1),
                             data);
         system_operator.initialize(matrix_free);
-        system_operator.set_cell_moduli([&problem](const auto &cell) {
-          return problem.stress_model.moduli(cell->material_id())
-            .lame_parameters();
-        });
+        system_operator.set_cell_moduli(
+          multigrid_tools::material_moduli(problem));
         system_operator.set_vertical_springs(springs);
       }
       report.phases.emplace_back("matrix-free set-up (active mesh)",

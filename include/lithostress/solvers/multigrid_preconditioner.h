@@ -6,9 +6,11 @@
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/vector_memory.h>
 #include <deal.II/matrix_free/matrix_free.h>
+#include <deal.II/multigrid/mg_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
 #include <deal.II/multigrid/multigrid.h>
 
+#include <lithostress/solvers/coarse_grid_solver.h>
 #include <lithostress/solvers/elastic_operator.h>
 #include <lithostress/solvers/linear_solver.h>
 #include <lithostress/solvers/multigrid_solver.h>
@@ -119,6 +121,17 @@ namespace lithostress
       Timer timer;
     };
 
+    /** The moduli of a (level or active) cell: those of its material. */
+    template <int dim>
+    auto
+    material_moduli(const DiscreteProblem<dim> &problem)
+    {
+      return [&problem](const auto &cell) {
+        return problem.stress_model.moduli(cell->material_id())
+          .lame_parameters();
+      };
+    }
+
     /** MatrixFree flags of the elasticity operator: gradients and JxW in
      * cells, values, normals and JxW on boundary faces if there are
      * @p springs. */
@@ -210,6 +223,125 @@ namespace lithostress
       });
     }
   } // namespace multigrid_tools
+  /**
+   * What the two hierarchies share once their level operators and
+   * transfer exist: Chebyshev smoothers, the coarse solve, deal.II's
+   * Multigrid and PreconditionMG objects, the phase clock, and the
+   * MultigridPreconditioner interface on top of them. @p Transfer is
+   * MGTransferMatrixFree or MGTransferGlobalCoarsening.
+   */
+  template <int dim, int degree, typename number, typename Transfer>
+  class MultigridCycle : public MultigridPreconditioner<dim, degree, number>
+  {
+  public:
+    using Base            = MultigridPreconditioner<dim, degree, number>;
+    using VectorType      = typename Base::VectorType;
+    using LevelVectorType = typename Base::LevelVectorType;
+    using LevelOperator   = typename Base::LevelOperator;
+    using Settings        = typename MatrixFreeMultigridSolver<dim>::Settings;
+
+    void
+    vmult(VectorType &dst, const VectorType &src) const override
+    {
+      preconditioner->vmult(dst, src);
+    }
+
+    std::map<std::string, double>
+    cycle_phases() const override
+    {
+      return clock.elapsed;
+    }
+
+    std::size_t
+    memory_consumption() const override
+    {
+      return transfer->memory_consumption() +
+             multigrid_tools::memory_consumption(level_operators);
+    }
+
+    double
+    time_finest_level_product() override
+    {
+      return multigrid_tools::time_finest_level_product(
+        level_operators, *multigrid, dof_handler.get_communicator());
+    }
+
+  protected:
+    explicit MultigridCycle(const DoFHandler<dim> &dof_handler)
+        : dof_handler(dof_handler)
+        , clock(dof_handler.get_communicator())
+    {
+    }
+
+    /**
+     * Set up the smoothers on level_operators, the coarse solve by
+     * @p initialize_coarse (called with `coarse`), and the V-cycle with
+     * @p level_transfer (which must outlive this object); phases go to
+     * @p report.
+     */
+    template <typename InitializeCoarse>
+    void
+    set_up_cycle(const Transfer         &level_transfer,
+                 const Settings         &settings,
+                 SolverReport           &report,
+                 const InitializeCoarse &initialize_coarse)
+    {
+      Timer timer(dof_handler.get_communicator(), true);
+      multigrid_tools::set_up_chebyshev(smoother, level_operators, settings);
+      report.phases.emplace_back("smoother set-up (eigenvalues)",
+                                 timer.wall_time());
+
+      timer.restart();
+      initialize_coarse(coarse);
+      report.phases.emplace_back(settings.coarse_solver_amg
+                                   ? "coarse matrix and AMG set-up"
+                                   : "coarse matrix and factorisation",
+                                 timer.wall_time());
+
+      transfer = &level_transfer;
+      mg_matrix.initialize(level_operators);
+      multigrid = std::make_unique<Multigrid<LevelVectorType>>(
+        mg_matrix, coarse, level_transfer, smoother, smoother);
+      clock.connect(*multigrid);
+      preconditioner =
+        std::make_unique<PreconditionMG<dim, LevelVectorType, Transfer>>(
+          dof_handler, *multigrid, level_transfer);
+    }
+
+    /** Destroy the V-cycle and the level operators' MatrixFree data,
+     * which point to the transfer, edge operators and level DoF handlers
+     * of the derived class: its destructor calls this. */
+    void
+    release_cycle()
+    {
+      preconditioner.reset();
+      multigrid.reset();
+      for (unsigned int level = level_operators.min_level();
+           level <= level_operators.max_level();
+           ++level)
+        level_operators[level].clear();
+    }
+
+    const DoFHandler<dim>        &dof_handler;
+    MGLevelObject<LevelOperator>  level_operators;
+    CoarseGridSolver<dim, number> coarse;
+
+  private:
+    mg::SmootherRelaxation<
+      PreconditionChebyshev<LevelOperator, LevelVectorType>,
+      LevelVectorType>
+                                smoother;
+    mg::Matrix<LevelVectorType> mg_matrix;
+    const Transfer             *transfer = nullptr;
+    multigrid_tools::PhaseClock clock;
+
+  protected:
+    std::unique_ptr<Multigrid<LevelVectorType>> multigrid;
+
+  private:
+    std::unique_ptr<PreconditionMG<dim, LevelVectorType, Transfer>>
+      preconditioner;
+  };
 } // namespace lithostress
 
 #endif
