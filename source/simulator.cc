@@ -2,6 +2,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/manifold.h>
 
+#include <lithostress/base/huge_pages.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/discretization/elastic_assembler.h>
@@ -270,9 +271,16 @@ namespace lithostress
   Simulator<dim>::setup_dofs()
   {
     TimerOutput::Scope t(*timer, "setup");
-    Timer              clock(communicator, true);
+    Timer              clock(communicator, true), part(communicator, true);
+    statistics.setup_phases.clear();
+    const auto phase_done = [&](const std::string &name) {
+      statistics.setup_phases.emplace_back(name, part.wall_time());
+      part.restart();
+    };
     dof_handler.distribute_dofs(fe_space->fe_collection());
+    phase_done("DoFs");
     linear_solver->prepare_dof_handler(dof_handler);
+    phase_done("level DoFs");
     system.locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler,
                                             system.locally_relevant);
@@ -281,10 +289,11 @@ namespace lithostress
     DoFTools::make_hanging_node_constraints(dof_handler, system.constraints);
     prescribed_displacement.apply(dof_handler, *fe_space, system.constraints);
     system.constraints.close();
+    phase_done("constraints");
     system.reinit(dof_handler, communicator, linear_solver->needs_matrix());
-    solution.reinit(system.locally_owned,
-                    system.locally_relevant,
-                    communicator);
+    phase_done("sparsity pattern and matrix");
+    // The previous mesh's solution; solve() sizes it anew.
+    solution.clear();
     statistics.dofs       = dof_handler.n_dofs();
     statistics.cells      = triangulation.n_global_active_cells();
     statistics.setup_time = clock.wall_time();
@@ -309,10 +318,12 @@ namespace lithostress
   void
   Simulator<dim>::solve()
   {
-    TimerOutput::Scope            t(*timer, "solve");
-    Timer                         clock(communicator, true);
-    TrilinosWrappers::MPI::Vector owned_solution(system.locally_owned,
-                                                 communicator);
+    TimerOutput::Scope t(*timer, "solve");
+    Timer              clock(communicator, true);
+    // The solver sizes owned_solution when its own vectors are gone, and
+    // the ghosted solution is made after it: the peak memory of the solve
+    // holds neither.
+    TrilinosWrappers::MPI::Vector owned_solution;
     const DiscreteProblem<dim>    problem{dof_handler,
                                        *fe_space,
                                        system,
@@ -321,6 +332,9 @@ namespace lithostress
                                        prescribed_displacement};
     statistics.solver = linear_solver->solve(problem, owned_solution);
     system.constraints.distribute(owned_solution);
+    solution.reinit(system.locally_owned,
+                    system.locally_relevant,
+                    communicator);
     solution = owned_solution;
     statistics.solve_time =
       clock.wall_time() - statistics.solver.benchmark_time;
@@ -426,6 +440,7 @@ namespace lithostress
       }
     log << "lithostress: " << Utilities::MPI::n_mpi_processes(communicator)
         << " MPI rank(s), output in " << output_directory << "/" << std::endl;
+    log << huge_pages_description() << '\n';
     log << "Loads:" << (loads.loads().empty() ? " none" : "") << '\n';
     for (const auto &load : loads.loads())
       log << "  " << load->description() << '\n';
@@ -559,6 +574,8 @@ namespace lithostress
         << "\", \"dofs\": " << statistics.dofs
         << ", \"cells\": " << statistics.cells
         << ", \"ranks\": " << Utilities::MPI::n_mpi_processes(communicator)
+        << ", \"huge_pages\": "
+        << (huge_pages_for_large_arrays() ? "true" : "false")
         << ", \"iterations\": " << statistics.solver.iterations
         << ", \"setup_s\": " << statistics.mesh_time + statistics.setup_time
         << ", \"assemble_s\": " << statistics.assemble_time
@@ -571,9 +588,18 @@ namespace lithostress
         << ", \"total_s\": " << total << ", \"peak_rss_mb\": " << peak_mb
         << ", \"solver_memory_mb\": "
         << statistics.solver.memory_bytes / 1048576. << ", \"phases\": {";
-    for (unsigned int k = 0; k < statistics.solver.phases.size(); ++k)
-      out << (k > 0 ? ", " : "") << '"' << statistics.solver.phases[k].first
-          << "\": " << statistics.solver.phases[k].second;
+    out << "\"set-up: mesh refinement\": " << statistics.mesh_time;
+    const char *separator = ", ";
+    for (const auto &[phase, seconds] : statistics.setup_phases)
+      {
+        out << separator << "\"set-up: " << phase << "\": " << seconds;
+        separator = ", ";
+      }
+    for (const auto &[phase, seconds] : statistics.solver.phases)
+      {
+        out << separator << '"' << phase << "\": " << seconds;
+        separator = ", ";
+      }
     out << "}}\n";
   }
 

@@ -20,9 +20,10 @@ def env():
     return e
 
 
-def run(prm, output, ranks=1, sets=(), expect_success=True):
-    """Run lithostress on tests/<prm> writing into <output>; returns the
-    CompletedProcess. Fails the test if the run fails unexpectedly."""
+def run(prm, output, ranks=1, sets=(), expect_success=True, extra_env=None):
+    """Run lithostress on tests/<prm> writing into <output> (with the
+    environment variables @extra_env added); returns the CompletedProcess.
+    Fails the test if the run fails unexpectedly."""
     if os.path.isdir(output):
         shutil.rmtree(output)
     cmd = [BINARY, os.path.join(SOURCE, prm), "--set", "Output directory=" + output]
@@ -30,7 +31,9 @@ def run(prm, output, ranks=1, sets=(), expect_success=True):
         cmd += ["--set", s]
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks)] + cmd
-    result = subprocess.run(cmd, capture_output=True, text=True, env=env())
+    environment = env()
+    environment.update(extra_env or {})
+    result = subprocess.run(cmd, capture_output=True, text=True, env=environment)
     if expect_success and result.returncode != 0:
         print(result.stdout)
         print(result.stderr)

@@ -76,6 +76,9 @@ namespace lithostress
       /** Wall time of all cycles spent timing matrix-vector products for
        * the benchmark; left out of solve_s and total_s. */
       double benchmark_time = 0;
+      /** The set-up split into its parts (name, seconds): DoFs,
+       * constraints, sparsity pattern and matrix. */
+      std::vector<std::pair<std::string, double>> setup_phases;
     };
 
     const CycleStatistics &

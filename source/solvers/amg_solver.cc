@@ -38,6 +38,7 @@ namespace lithostress
     report.setup_time = timer.wall_time();
 
     timer.restart();
+    solution.reinit(system.locally_owned, dof_handler.get_communicator());
     const double                            rhs_norm = system.rhs.l2_norm();
     SolverControl                           control(settings.max_iterations,
                           settings.relative_tolerance * rhs_norm,

@@ -26,6 +26,7 @@ namespace lithostress
     SolverControl control(1, 0);
     TrilinosWrappers::SolverDirect::AdditionalData data(false, amesos_solver);
     TrilinosWrappers::SolverDirect                 solver(control, data);
+    solution.reinit(system.locally_owned, dof_handler.get_communicator());
     try
       {
         solver.solve(system.matrix, solution, system.rhs);

@@ -3,6 +3,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/vector_memory.h>
 #include <deal.II/multigrid/mg_constrained_dofs.h>
 #include <deal.II/multigrid/mg_matrix.h>
 #include <deal.II/multigrid/mg_transfer_matrix_free.h>
@@ -165,7 +166,7 @@ namespace lithostress
       Timer timer(communicator, true), total(communicator, true);
 
       // The operator on the active mesh (double precision).
-      SystemOperator system_operator;
+      auto system_operator = std::make_unique<SystemOperator>();
       {
         typename MatrixFree<dim, double>::AdditionalData data;
         multigrid_tools::set_operator_flags(data, springs);
@@ -175,15 +176,30 @@ namespace lithostress
                             problem.system.constraints,
                             QGauss<1>(degree + 1),
                             data);
-        system_operator.initialize(matrix_free);
-        system_operator.set_cell_moduli(
+        system_operator->initialize(matrix_free);
+        system_operator->set_cell_moduli(
           multigrid_tools::material_moduli(problem));
-        system_operator.set_vertical_springs(springs);
+        system_operator->set_vertical_springs(springs);
       }
       report.phases.emplace_back("matrix-free set-up (active mesh)",
                                  timer.wall_time());
 
-      const std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
+      // The right-hand side in the matrix-free vector layout (same owned
+      // DoFs); the Trilinos copy is released before the hierarchy is built.
+      VectorType rhs, x;
+      system_operator->initialize_dof_vector(rhs);
+      system_operator->initialize_dof_vector(x);
+      AssertThrow(problem.system.locally_owned.n_elements() ==
+                    rhs.locally_owned_size(),
+                  ExcInternalError());
+      {
+        unsigned int k = 0;
+        for (const types::global_dof_index i : problem.system.locally_owned)
+          rhs.local_element(k++) = problem.system.rhs[i];
+      }
+      problem.system.rhs.clear();
+
+      std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
         preconditioner =
           settings.global_coarsening
             ? make_global_coarsening_preconditioner<dim, degree, number>(
@@ -193,19 +209,7 @@ namespace lithostress
                                                                        report);
       report.setup_time = total.wall_time();
 
-      // Solve in the matrix-free vector layout (same owned DoFs).
       timer.restart();
-      VectorType rhs, x;
-      system_operator.initialize_dof_vector(rhs);
-      system_operator.initialize_dof_vector(x);
-      AssertThrow(problem.system.locally_owned.n_elements() ==
-                    rhs.locally_owned_size(),
-                  ExcInternalError());
-      {
-        unsigned int k = 0;
-        for (const types::global_dof_index i : problem.system.locally_owned)
-          rhs.local_element(k++) = problem.system.rhs[i];
-      }
       const double  rhs_norm = rhs.l2_norm();
       SolverControl control(settings.max_iterations,
                             settings.relative_tolerance * rhs_norm,
@@ -216,7 +220,7 @@ namespace lithostress
           SolverCG<VectorType> cg(control);
           try
             {
-              cg.solve(system_operator, x, rhs, *preconditioner);
+              cg.solve(*system_operator, x, rhs, *preconditioner);
             }
           catch (const SolverControl::NoConvergence &exc)
             {
@@ -228,12 +232,6 @@ namespace lithostress
                 "Solver/Type = AMG");
             }
         }
-      {
-        unsigned int k = 0;
-        for (const types::global_dof_index i : problem.system.locally_owned)
-          solution[i] = x.local_element(k++);
-        solution.compress(VectorOperation::insert);
-      }
       report.iterations = control.last_step();
       report.final_residual =
         rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
@@ -243,23 +241,41 @@ namespace lithostress
 
       report.memory_bytes =
         Utilities::MPI::sum(static_cast<double>(
-                              system_operator.memory_consumption() +
+                              system_operator->memory_consumption() +
                               preconditioner->memory_consumption()),
                             communicator);
 
       if (settings.time_matrix_vector_product)
         {
-          // On vectors the solve has finished with, so that the
-          // measurement does not raise the peak memory.
+          // Into the right-hand side, which the solve has finished with, so
+          // that the measurement does not raise the peak memory.
           Timer benchmark(communicator, true);
           report.matrix_vector_product_time =
             fastest_of(20, communicator, [&]() {
-              system_operator.vmult(x, rhs);
+              system_operator->vmult(rhs, x);
             });
           report.level_matrix_vector_product_time =
             preconditioner->time_finest_level_product();
           report.benchmark_time = benchmark.wall_time();
         }
+
+      // Release the hierarchy, the operator and the vectors CG and the
+      // V-cycle left in deal.II's pools before the Trilinos solution is
+      // made: it does not add to the solve's peak memory.
+      preconditioner.reset();
+      system_operator.reset();
+      rhs.reinit(0);
+      GrowingVectorMemory<VectorType>::release_unused_memory();
+      GrowingVectorMemory<
+        typename MultigridPreconditioner<dim, degree, number>::
+          LevelVectorType>::release_unused_memory();
+      solution.reinit(problem.system.locally_owned, communicator);
+      {
+        unsigned int k = 0;
+        for (const types::global_dof_index i : problem.system.locally_owned)
+          solution[i] = x.local_element(k++);
+        solution.compress(VectorOperation::insert);
+      }
       return report;
     }
 

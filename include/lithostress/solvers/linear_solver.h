@@ -56,14 +56,17 @@ namespace lithostress
    * one solve: the DoFs and element space, the assembled system (the
    * matrix only if the solver asked for it), and the model the operator is
    * made of — moduli, loads that add stiffness, prescribed displacements —
-   * for solvers that apply the operator without a matrix.
+   * for solvers that apply the operator without a matrix. The system is
+   * not const: a solver that copies the right-hand side into a vector of
+   * its own releases `system.rhs` (nothing reads it after the solve), so
+   * that the two copies do not both count in the peak memory.
    */
   template <int dim>
   struct DiscreteProblem
   {
     const DoFHandler<dim>             &dof_handler;
     const FiniteElementSpace<dim>     &fe_space;
-    const LinearSystem<dim>           &system;
+    LinearSystem<dim>                 &system;
     const StressModel<dim>            &stress_model;
     const LoadCollection<dim>         &loads;
     const PrescribedDisplacement<dim> &prescribed_displacement;
@@ -82,9 +85,10 @@ namespace lithostress
   public:
     virtual ~LinearSolver() = default;
 
-    /** Solve for the owned entries of @p solution (constraints are
-     * distributed by the caller). Throws ComputationError if the solver
-     * does not converge. */
+    /** Solve for the owned entries of @p solution, which the solver sizes
+     * to the owned DoFs — as late as it can, after its own work vectors
+     * are released (constraints are distributed by the caller). Throws
+     * ComputationError if the solver does not converge. */
     virtual SolverReport
     solve(const DiscreteProblem<dim>    &problem,
           TrilinosWrappers::MPI::Vector &solution) = 0;

@@ -1,0 +1,54 @@
+#include <lithostress/base/huge_pages.h>
+
+#include <cstdlib>
+#include <fstream>
+
+namespace lithostress
+{
+  namespace
+  {
+    bool
+    requested_from_glibc()
+    {
+      const char *tunables = std::getenv("GLIBC_TUNABLES");
+      return tunables != nullptr &&
+             std::string(tunables).find("glibc.malloc.hugetlb=1") !=
+               std::string::npos;
+    }
+
+    /** The kernel's transparent huge page mode, e.g. "madvise". */
+    std::string
+    kernel_mode()
+    {
+      std::ifstream in("/sys/kernel/mm/transparent_hugepage/enabled");
+      std::string   line;
+      std::getline(in, line);
+      const auto open = line.find('['), close = line.find(']');
+      if (open == std::string::npos || close == std::string::npos)
+        return "unknown";
+      return line.substr(open + 1, close - open - 1);
+    }
+  } // namespace
+
+  bool
+  huge_pages_for_large_arrays()
+  {
+    const std::string mode = kernel_mode();
+    return requested_from_glibc() && (mode == "madvise" || mode == "always");
+  }
+
+  std::string
+  huge_pages_description()
+  {
+    const std::string mode = kernel_mode();
+    if (!requested_from_glibc())
+      return "Memory: 4 KiB pages (started without the lithostress "
+             "launcher, or with LITHOSTRESS_HUGE_PAGES=off).";
+    if (mode != "madvise" && mode != "always")
+      return "Memory: 4 KiB pages (the kernel's transparent huge pages are "
+             "'" +
+             mode + "').";
+    return "Memory: transparent huge pages for large arrays "
+           "(glibc.malloc.hugetlb=1).";
+  }
+} // namespace lithostress
