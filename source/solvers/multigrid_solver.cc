@@ -110,8 +110,16 @@ namespace lithostress
       report.phases.emplace_back("level diagonals", timer.wall_time());
 
       timer.restart();
+      // The level vectors get the operators' own partitioners, so that the
+      // operators never re-create a vector the V-cycle hands them (which
+      // costs a copy and raises the peak memory at the first cycle).
+      std::vector<std::shared_ptr<const Utilities::MPI::Partitioner>>
+        partitioners(n_levels);
+      for (unsigned int level = 0; level < n_levels; ++level)
+        partitioners[level] =
+          level_operators[level].get_matrix_free()->get_vector_partitioner();
       transfer.initialize_constraints(constrained_dofs);
-      transfer.build(dof_handler);
+      transfer.build(dof_handler, partitioners);
       report.phases.emplace_back("transfer set-up", timer.wall_time());
 
       this->set_up_cycle(transfer,
