@@ -34,17 +34,20 @@ namespace lithostress
   huge_pages_for_large_arrays()
   {
     const std::string mode = kernel_mode();
-    return requested_from_glibc() && (mode == "madvise" || mode == "always");
+    return mode == "always" || (requested_from_glibc() && mode == "madvise");
   }
 
   std::string
   huge_pages_description()
   {
     const std::string mode = kernel_mode();
+    if (mode == "always")
+      return "Memory: transparent huge pages (the kernel's mode is "
+             "'always').";
     if (!requested_from_glibc())
       return "Memory: 4 KiB pages (started without the lithostress "
              "launcher, or with LITHOSTRESS_HUGE_PAGES=off).";
-    if (mode != "madvise" && mode != "always")
+    if (mode != "madvise")
       return "Memory: 4 KiB pages (the kernel's transparent huge pages are "
              "'" +
              mode + "').";

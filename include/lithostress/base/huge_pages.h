@@ -8,9 +8,10 @@ namespace lithostress
   /**
    * Whether glibc places this process's large allocations on transparent
    * huge pages: the `lithostress` launcher (app/launcher.cc) starts the
-   * program with GLIBC_TUNABLES=glibc.malloc.hugetlb=1, and the kernel must
-   * allow huge pages on request (transparent_hugepage `madvise` or
-   * `always`). Reported in the log and in statistics.json.
+   * program with GLIBC_TUNABLES=glibc.malloc.hugetlb=1, which takes effect
+   * where the kernel's transparent_hugepage mode is `madvise`; in mode
+   * `always` every run has them. Reported in the log and in
+   * statistics.json.
    */
   bool
   huge_pages_for_large_arrays();
