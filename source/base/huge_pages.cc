@@ -51,7 +51,8 @@ namespace lithostress
       return "Memory: 4 KiB pages (the kernel's transparent huge pages are "
              "'" +
              mode + "').";
-    return "Memory: transparent huge pages for large arrays "
-           "(glibc.malloc.hugetlb=1).";
+    return std::string("Memory: transparent huge pages for large arrays "
+                       "(GLIBC_TUNABLES=") +
+           std::getenv("GLIBC_TUNABLES") + ").";
   }
 } // namespace lithostress

@@ -18,6 +18,31 @@ namespace lithostress
 {
   namespace
   {
+    /** Copy the owned entries between a Trilinos vector and a matrix-free
+     * vector with the same owned DoFs (@p owned, in order). */
+    void
+    copy_owned_entries(const IndexSet                             &owned,
+                       const TrilinosWrappers::MPI::Vector        &from,
+                       LinearAlgebra::distributed::Vector<double> &to)
+    {
+      AssertThrow(owned.n_elements() == to.locally_owned_size(),
+                  ExcInternalError());
+      unsigned int k = 0;
+      for (const types::global_dof_index i : owned)
+        to.local_element(k++) = from[i];
+    }
+
+    void
+    copy_owned_entries(const IndexSet                                   &owned,
+                       const LinearAlgebra::distributed::Vector<double> &from,
+                       TrilinosWrappers::MPI::Vector                    &to)
+    {
+      unsigned int k = 0;
+      for (const types::global_dof_index i : owned)
+        to[i] = from.local_element(k++);
+      to.compress(VectorOperation::insert);
+    }
+
     /** The V-cycle of local smoothing on the levels of the p4est forest
      * (step-37/step-50): MGTransferMatrixFree with MGConstrainedDoFs for
      * refinement edges and prescribed displacements, edge matrices at
@@ -197,14 +222,7 @@ namespace lithostress
       VectorType rhs, x;
       system_operator->initialize_dof_vector(rhs);
       system_operator->initialize_dof_vector(x);
-      AssertThrow(problem.system.locally_owned.n_elements() ==
-                    rhs.locally_owned_size(),
-                  ExcInternalError());
-      {
-        unsigned int k = 0;
-        for (const types::global_dof_index i : problem.system.locally_owned)
-          rhs.local_element(k++) = problem.system.rhs[i];
-      }
+      copy_owned_entries(problem.system.locally_owned, problem.system.rhs, rhs);
       problem.system.rhs.clear();
 
       std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
@@ -278,12 +296,7 @@ namespace lithostress
         typename MultigridPreconditioner<dim, degree, number>::
           LevelVectorType>::release_unused_memory();
       solution.reinit(problem.system.locally_owned, communicator);
-      {
-        unsigned int k = 0;
-        for (const types::global_dof_index i : problem.system.locally_owned)
-          solution[i] = x.local_element(k++);
-        solution.compress(VectorOperation::insert);
-      }
+      copy_owned_entries(problem.system.locally_owned, x, solution);
       return report;
     }
 
