@@ -128,6 +128,51 @@ namespace lithostress
 
 
   void
+  CliqueSparsity::number_columns()
+  {
+    const types::global_dof_index n_owned = locally_owned.n_elements();
+    column_gids.clear();
+    for (const types::global_dof_index dof : locally_owned)
+      column_gids.push_back(dof);
+    std::vector<types::global_dof_index> remote;
+    for (const types::global_dof_index dof : clique_dofs)
+      if (!locally_owned.is_element(dof))
+        remote.push_back(dof);
+    remote.insert(remote.end(),
+                  received_columns.begin(),
+                  received_columns.end());
+    std::sort(remote.begin(), remote.end());
+    remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
+    column_gids.insert(column_gids.end(), remote.begin(), remote.end());
+
+    const auto local = [&](const types::global_dof_index dof) {
+      return locally_owned.is_element(dof)
+               ? locally_owned.index_within_set(dof)
+               : n_owned +
+                   (std::lower_bound(remote.begin(), remote.end(), dof) -
+                    remote.begin());
+    };
+    // Owned columns come first, so a clique sorted by global number need
+    // not be sorted by local number any more.
+    for (std::size_t c = 0; c < n_cliques(); ++c)
+      {
+        const auto begin = clique_dofs.begin() + clique_start[c],
+                   end   = clique_dofs.begin() + clique_start[c + 1];
+        std::transform(begin, end, begin, local);
+        std::sort(begin, end);
+      }
+    for (std::size_t k = 0; k < received_rows.size(); ++k)
+      {
+        received_rows[k] = local(received_rows[k]);
+        const auto begin = received_columns.begin() + received_start[k],
+                   end   = received_columns.begin() + received_start[k + 1];
+        std::transform(begin, end, begin, local);
+        std::sort(begin, end);
+      }
+  }
+
+
+  void
   CliqueSparsity::index_rows_to_cliques()
   {
     const unsigned int n_rows = locally_owned.n_elements();
@@ -135,11 +180,10 @@ namespace lithostress
     const auto for_each_owned_row = [&](const auto &visit) {
       for (std::size_t c = 0; c < n_cliques(); ++c)
         for (std::size_t p = clique_start[c]; p < clique_start[c + 1]; ++p)
-          if (locally_owned.is_element(clique_dofs[p]))
-            visit(locally_owned.index_within_set(clique_dofs[p]), c);
+          if (clique_dofs[p] < n_rows)
+            visit(clique_dofs[p], c);
       for (std::size_t k = 0; k < received_rows.size(); ++k)
-        visit(locally_owned.index_within_set(received_rows[k]),
-              n_cliques() + k);
+        visit(received_rows[k], n_cliques() + k);
     };
     for_each_owned_row(
       [&](const unsigned int row, const std::size_t) { ++row_start[row + 1]; });
@@ -154,20 +198,16 @@ namespace lithostress
 
 
   void
-  CliqueSparsity::row_columns(
-    const unsigned int                    local_row,
-    std::vector<types::global_dof_index> &columns,
-    std::vector<types::global_dof_index> &merged) const
+  CliqueSparsity::row_columns(const unsigned int         row,
+                              std::vector<unsigned int> &columns,
+                              std::vector<unsigned int> &merged) const
   {
-    const types::global_dof_index row =
-      locally_owned.nth_index_in_set(local_row);
     columns.clear();
     // A constrained row keeps only its diagonal (the cliques hold the DoFs
     // it is constrained to instead); see add_entries_local_to_global.
-    if (constraints.is_constrained(row))
+    if (constraints.is_constrained(column_gids[row]))
       columns.push_back(row);
-    for (unsigned int p = row_start[local_row]; p < row_start[local_row + 1];
-         ++p)
+    for (unsigned int p = row_start[row]; p < row_start[row + 1]; ++p)
       {
         const std::size_t c = row_cliques[p];
         const auto        begin =
@@ -190,6 +230,24 @@ namespace lithostress
   }
 
 
+  namespace
+  {
+    /** An Epetra graph that can be told its rows are sorted (a protected
+     * flag), so that FillComplete does not sort them again. */
+    class SortedEpetraGraph : public Epetra_CrsGraph
+    {
+    public:
+      using Epetra_CrsGraph::Epetra_CrsGraph;
+
+      void
+      set_sorted()
+      {
+        SetSorted(true);
+      }
+    };
+  } // namespace
+
+
   void
   CliqueSparsity::reinit_matrix(TrilinosWrappers::SparseMatrix &matrix,
                                 const MPI_Comm                  communicator)
@@ -197,37 +255,36 @@ namespace lithostress
     using int_type = TrilinosWrappers::types::int_type;
     matrix.clear();
     exchange_foreign_rows(communicator);
+    number_columns();
     index_rows_to_cliques();
 
-    const unsigned int                   n_rows = locally_owned.n_elements();
-    std::vector<types::global_dof_index> columns, merge_scratch;
-    std::vector<int>                     row_lengths(n_rows);
+    const unsigned int        n_rows = locally_owned.n_elements();
+    std::vector<unsigned int> columns, merged;
+    std::vector<int>          row_lengths(n_rows);
     for (unsigned int row = 0; row < n_rows; ++row)
       {
-        row_columns(row, columns, merge_scratch);
+        row_columns(row, columns, merged);
         row_lengths[row] = columns.size();
       }
 
     // Static profile with the exact lengths: one block of indices, filled
-    // once, never copied. On one rank the column map is the row map.
+    // once with sorted local indices, never copied or converted. The
+    // column map is Epetra's own convention: owned columns first, in order.
     const Epetra_Map row_map =
       locally_owned.make_trilinos_map(communicator, false);
-    auto graph  = (Utilities::MPI::n_mpi_processes(communicator) == 1
-                     ? std::make_unique<Epetra_CrsGraph>(
-                        Copy, row_map, row_map, row_lengths.data(), true)
-                     : std::make_unique<Epetra_CrsGraph>(
-                        Copy, row_map, row_lengths.data(), true));
+    const std::vector<int_type> gids(column_gids.begin(), column_gids.end());
+    const Epetra_Map            column_map(
+      -1, gids.size(), gids.data(), 0, row_map.Comm());
+    SortedEpetraGraph graph(
+      Copy, row_map, column_map, row_lengths.data(), true);
     row_lengths = std::vector<int>();
-    std::vector<int_type> indices;
+    std::vector<int> indices;
     for (unsigned int row = 0; row < n_rows; ++row)
       {
-        row_columns(row, columns, merge_scratch);
+        row_columns(row, columns, merged);
         indices.assign(columns.begin(), columns.end());
         const int ierr =
-          graph->InsertGlobalIndices(static_cast<int_type>(
-                                       locally_owned.nth_index_in_set(row)),
-                                     indices.size(),
-                                     indices.data());
+          graph.InsertMyIndices(row, indices.size(), indices.data());
         AssertThrow(ierr >= 0,
                     TrilinosWrappers::SparseMatrix::ExcTrilinosError(ierr));
       }
@@ -238,11 +295,13 @@ namespace lithostress
     received_columns = std::vector<types::global_dof_index>();
     row_start        = std::vector<unsigned int>();
     row_cliques      = std::vector<unsigned int>();
+    column_gids      = std::vector<types::global_dof_index>();
 
-    int ierr = graph->FillComplete(row_map, row_map);
+    graph.set_sorted();
+    int ierr = graph.FillComplete(row_map, row_map);
     AssertThrow(ierr >= 0,
                 TrilinosWrappers::SparseMatrix::ExcTrilinosError(ierr));
-    ierr = graph->OptimizeStorage();
+    ierr = graph.OptimizeStorage();
     AssertThrow(ierr >= 0,
                 TrilinosWrappers::SparseMatrix::ExcTrilinosError(ierr));
 
@@ -250,7 +309,7 @@ namespace lithostress
     // an Epetra matrix: a view (row pointers only, no values) shares the
     // graph's data, and the matrix deal.II makes from it holds the only copy
     // of the values.
-    const Epetra_CrsMatrix view(View, *graph);
+    const Epetra_CrsMatrix view(View, graph);
     matrix.reinit(view, false);
   }
 

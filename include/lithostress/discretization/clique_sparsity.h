@@ -71,22 +71,30 @@ namespace lithostress
     void
     exchange_foreign_rows(const MPI_Comm communicator);
 
-    /** For every owned row (local number), the cliques that contain it:
-     * cell cliques first, then received one-row cliques. */
+    /** Number the columns locally (owned ones first, in order, then the
+     * others ascending: column_gids) and rewrite the cliques, and the
+     * received rows and columns, in these numbers; an owned row's number is
+     * its column's. */
+    void
+    number_columns();
+
+    /** For every owned row, the cliques that contain it: cell cliques
+     * first, then received one-row cliques. */
     void
     index_rows_to_cliques();
 
-    /** The sorted columns of owned row @p local_row into @p columns. */
+    /** The sorted local columns of owned row @p row into @p columns. */
     void
-    row_columns(const unsigned int                    local_row,
-                std::vector<types::global_dof_index> &columns,
-                std::vector<types::global_dof_index> &merged) const;
+    row_columns(const unsigned int         row,
+                std::vector<unsigned int> &columns,
+                std::vector<unsigned int> &merged) const;
 
     const IndexSet                  &locally_owned;
     const AffineConstraints<double> &constraints;
 
     /** Clique c is clique_dofs[clique_start[c] .. clique_start[c+1]),
-     * sorted and unique. */
+     * sorted and unique; global numbers until number_columns(), local
+     * ones after. */
     std::vector<std::size_t>             clique_start;
     std::vector<types::global_dof_index> clique_dofs;
 
@@ -101,6 +109,9 @@ namespace lithostress
      * (index - n_cliques()). */
     std::vector<unsigned int> row_start;
     std::vector<unsigned int> row_cliques;
+
+    /** Global number of each local column. */
+    std::vector<types::global_dof_index> column_gids;
 
     std::vector<types::global_dof_index> scratch;
   };
