@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <map>
-#include <memory>
 
 namespace lithostress
 {
@@ -64,22 +63,24 @@ namespace lithostress
   void
   CliqueSparsity::exchange_foreign_rows(const MPI_Comm communicator)
   {
+    n_cell_cliques = n_cliques();
     received_rows.clear();
-    received_start.assign(1, 0);
-    received_columns.clear();
     if (Utilities::MPI::n_mpi_processes(communicator) == 1)
       return;
 
     // The union of our cliques in each row another rank owns.
     std::map<types::global_dof_index, std::vector<types::global_dof_index>>
       foreign;
-    for (std::size_t c = 0; c < n_cliques(); ++c)
+    for (std::size_t c = 0; c < n_cell_cliques; ++c)
       {
         const auto begin = clique_dofs.begin() + clique_start[c],
                    end   = clique_dofs.begin() + clique_start[c + 1];
         for (auto row = begin; row != end; ++row)
           if (!locally_owned.is_element(*row))
-            foreign[*row].insert(foreign[*row].end(), begin, end);
+            {
+              auto &columns = foreign[*row];
+              columns.insert(columns.end(), begin, end);
+            }
       }
     IndexSet foreign_rows(locally_owned.size());
     for (auto &[row, columns] : foreign)
@@ -117,10 +118,10 @@ namespace lithostress
             const std::size_t             n   = message[p + 1];
             AssertThrow(locally_owned.is_element(row), ExcInternalError());
             received_rows.push_back(row);
-            received_columns.insert(received_columns.end(),
-                                    message.begin() + p + 2,
-                                    message.begin() + p + 2 + n);
-            received_start.push_back(received_columns.size());
+            clique_dofs.insert(clique_dofs.end(),
+                               message.begin() + p + 2,
+                               message.begin() + p + 2 + n);
+            clique_start.push_back(clique_dofs.size());
             p += 2 + n;
           }
       }
@@ -138,9 +139,6 @@ namespace lithostress
     for (const types::global_dof_index dof : clique_dofs)
       if (!locally_owned.is_element(dof))
         remote.push_back(dof);
-    remote.insert(remote.end(),
-                  received_columns.begin(),
-                  received_columns.end());
     std::sort(remote.begin(), remote.end());
     remote.erase(std::unique(remote.begin(), remote.end()), remote.end());
     column_gids.insert(column_gids.end(), remote.begin(), remote.end());
@@ -161,14 +159,10 @@ namespace lithostress
         std::transform(begin, end, begin, local);
         std::sort(begin, end);
       }
-    for (std::size_t k = 0; k < received_rows.size(); ++k)
-      {
-        received_rows[k] = local(received_rows[k]);
-        const auto begin = received_columns.begin() + received_start[k],
-                   end   = received_columns.begin() + received_start[k + 1];
-        std::transform(begin, end, begin, local);
-        std::sort(begin, end);
-      }
+    std::transform(received_rows.begin(),
+                   received_rows.end(),
+                   received_rows.begin(),
+                   local);
   }
 
 
@@ -178,12 +172,12 @@ namespace lithostress
     const unsigned int n_rows = locally_owned.n_elements();
     row_start.assign(n_rows + 1, 0);
     const auto for_each_owned_row = [&](const auto &visit) {
-      for (std::size_t c = 0; c < n_cliques(); ++c)
+      for (std::size_t c = 0; c < n_cell_cliques; ++c)
         for (std::size_t p = clique_start[c]; p < clique_start[c + 1]; ++p)
           if (clique_dofs[p] < n_rows)
             visit(clique_dofs[p], c);
       for (std::size_t k = 0; k < received_rows.size(); ++k)
-        visit(received_rows[k], n_cliques() + k);
+        visit(received_rows[k], n_cell_cliques + k);
     };
     for_each_owned_row(
       [&](const unsigned int row, const std::size_t) { ++row_start[row + 1]; });
@@ -209,15 +203,8 @@ namespace lithostress
       columns.push_back(row);
     for (unsigned int p = row_start[row]; p < row_start[row + 1]; ++p)
       {
-        const std::size_t c = row_cliques[p];
-        const auto        begin =
-          (c < n_cliques()
-             ? clique_dofs.begin() + clique_start[c]
-             : received_columns.begin() + received_start[c - n_cliques()]);
-        const auto end =
-          (c < n_cliques()
-             ? clique_dofs.begin() + clique_start[c + 1]
-             : received_columns.begin() + received_start[c - n_cliques() + 1]);
+        const auto begin = clique_dofs.begin() + clique_start[row_cliques[p]],
+                   end = clique_dofs.begin() + clique_start[row_cliques[p] + 1];
         merged.resize(columns.size() + (end - begin));
         merged.erase(std::set_union(columns.begin(),
                                     columns.end(),
@@ -289,13 +276,11 @@ namespace lithostress
                     TrilinosWrappers::SparseMatrix::ExcTrilinosError(ierr));
       }
     clique_start.assign(1, 0);
-    clique_dofs      = std::vector<types::global_dof_index>();
-    received_rows    = std::vector<types::global_dof_index>();
-    received_start   = std::vector<std::size_t>();
-    received_columns = std::vector<types::global_dof_index>();
-    row_start        = std::vector<unsigned int>();
-    row_cliques      = std::vector<unsigned int>();
-    column_gids      = std::vector<types::global_dof_index>();
+    clique_dofs   = std::vector<types::global_dof_index>();
+    received_rows = std::vector<types::global_dof_index>();
+    row_start     = std::vector<unsigned int>();
+    row_cliques   = std::vector<unsigned int>();
+    column_gids   = std::vector<types::global_dof_index>();
 
     graph.set_sorted();
     int ierr = graph.FillComplete(row_map, row_map);

@@ -67,19 +67,20 @@ namespace lithostress
 
   private:
     /** Exchange the contributions to rows we do not own: each becomes a
-     * one-row clique at its owner (received_rows / received_columns). */
+     * clique at its owner, appended after the cell cliques, that adds to
+     * its row (received_rows) only. */
     void
     exchange_foreign_rows(const MPI_Comm communicator);
 
     /** Number the columns locally (owned ones first, in order, then the
-     * others ascending: column_gids) and rewrite the cliques, and the
-     * received rows and columns, in these numbers; an owned row's number is
-     * its column's. */
+     * others ascending: column_gids) and rewrite the cliques and the
+     * received rows in these numbers; an owned row's number is its
+     * column's. */
     void
     number_columns();
 
-    /** For every owned row, the cliques that contain it: cell cliques
-     * first, then received one-row cliques. */
+    /** For every owned row, the cliques that add to it: the cell cliques
+     * that contain it and the received cliques of that row. */
     void
     index_rows_to_cliques();
 
@@ -98,15 +99,14 @@ namespace lithostress
     std::vector<std::size_t>             clique_start;
     std::vector<types::global_dof_index> clique_dofs;
 
-    /** Received clique k contributes received_columns[received_start[k]
-     * .. received_start[k+1]) to row received_rows[k] only. */
+    /** Cliques [0, n_cell_cliques) are this rank's cells' (and
+     * add_clique()'s); received clique n_cell_cliques + k adds to row
+     * received_rows[k] only. */
+    std::size_t                          n_cell_cliques = 0;
     std::vector<types::global_dof_index> received_rows;
-    std::vector<std::size_t>             received_start;
-    std::vector<types::global_dof_index> received_columns;
 
-    /** Owned row l is in the cliques row_cliques[row_start[l] ..
-     * row_start[l+1]); an index >= n_cliques() is received clique
-     * (index - n_cliques()). */
+    /** Owned row l gets the cliques row_cliques[row_start[l] ..
+     * row_start[l+1]). */
     std::vector<unsigned int> row_start;
     std::vector<unsigned int> row_cliques;
 
