@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <lithostress/base/input_error.h>
+#include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/simulator.h>
 
@@ -112,6 +113,7 @@ main(int argc, char *argv[])
       return 1;
     }
 
+  lithostress::interruption::install_handlers();
   try
     {
       ParameterHandler prm;
@@ -133,9 +135,19 @@ main(int argc, char *argv[])
                   << std::endl;
       return 3;
     }
+  catch (const lithostress::RunInterrupted &stop)
+    {
+      if (root)
+        std::cerr << "lithostress: " << stop.what() << std::endl;
+      return 128 + stop.signal();
+    }
   catch (const std::exception &error)
     {
+      // Not known to be collective: the other ranks may be waiting in a
+      // communication this rank has left, so end them all.
       std::cerr << "lithostress: internal error: " << error.what() << std::endl;
+      if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        MPI_Abort(MPI_COMM_WORLD, 2);
       return 2;
     }
   return 0;

@@ -92,6 +92,18 @@ class InputError(Exception):
 # Reading
 
 
+
+def save_complete(fig, path):
+    """Save @fig as the PNG @path under a temporary name and rename it when
+    complete: a run stopped half-way never leaves half a figure."""
+    temporary = "%s.part-%d.png" % (path[:-4], os.getpid())
+    try:
+        fig.savefig(temporary, dpi=DPI)
+        os.replace(temporary, path)
+    finally:
+        if os.path.exists(temporary):
+            os.remove(temporary)
+
 def read_table(path, required, optional=()):
     """Read a CSV file by column name: a dict name -> float array for the
     required and optional columns (an optional column that is missing is
@@ -556,7 +568,7 @@ def plot_principal_stresses(directory, settings):
             fig.text((x_left + panel_w) / fig_w, (fig_h - 0.2) / fig_h, note,
                      fontsize=8, color="0.3", va="top", ha="right")
     out = os.path.join(directory, "principal_stresses.png")
-    fig.savefig(out, dpi=DPI)
+    save_complete(fig, out)
     plt.close(fig)
     return out
 
@@ -677,7 +689,7 @@ def plot_surface_profile(directory, settings):
     a2.set_xlim(np.nanmin(x) / ls, np.nanmax(x) / ls)
     fig.tight_layout()
     out = os.path.join(directory, "surface_profile.png")
-    fig.savefig(out, dpi=DPI)
+    save_complete(fig, out)
     plt.close(fig)
     return out
 
@@ -806,7 +818,7 @@ def plot_stress_depth(path, settings):
     fig.suptitle(titled(settings, "stress\u2013depth profile '%s'%s" % (label, where)), fontsize=11)
     fig.tight_layout()
     out = os.path.join(directory_of(path), "stress_depth_%s.png" % label)
-    fig.savefig(out, dpi=DPI)
+    save_complete(fig, out)
     plt.close(fig)
     return out
 

@@ -4,8 +4,11 @@
 
 #include <lithostress/base/huge_pages.h>
 #include <lithostress/base/input_error.h>
+#include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
+#include <lithostress/boundary_conditions/rigid_body_support.h>
 #include <lithostress/discretization/elastic_assembler.h>
+#include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/error_norms.h>
 #include <lithostress/postprocess/force_balance.h>
 #include <lithostress/postprocess/point_values.h>
@@ -60,6 +63,7 @@ namespace lithostress
     LoadCollection<dim>::declare_parameters(prm, first_pass);
     MeshRefinement<dim>::declare_parameters(prm);
     LinearSolverSelector<dim>::declare_parameters(prm);
+    MemoryBudget::declare_parameters(prm);
     SolutionOutput<dim>::declare_parameters(prm);
     prm.enter_subsection("Output");
     prm.declare_entry("Surface profile boundary",
@@ -225,6 +229,7 @@ namespace lithostress
     refinement.parse_parameters(prm);
     linear_solver = LinearSolverSelector<dim>::create(prm, *fe_space, loads);
     solution_output.parse_parameters(prm);
+    memory_budget.parse_parameters(prm, communicator);
 
     for (const Point<dim> &p : points)
       {
@@ -236,7 +241,58 @@ namespace lithostress
                               std::to_string(p[1]) +
                               ") [m] is outside the mesh");
       }
+    check_well_posed(length_unit);
     check_output_directory();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::check_well_posed(const std::string &length_unit)
+  {
+    // Rigid-body motions on the coarse mesh, where the test is exact.
+    dof_handler.distribute_dofs(fe_space->fe_collection());
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    AffineConstraints<double> constraints(relevant);
+    on_all_ranks(communicator, [&]() {
+      prescribed_displacement.apply(dof_handler, *fe_space, constraints);
+    });
+    constraints.close();
+    RigidBodySupport<dim>::check(
+      dof_handler, *fe_space, constraints, loads, length_scale, length_unit);
+
+    // The first mesh, and with global refinement the last one, must fit
+    // in memory. DoFs grow with the cells in the interior (dim p^dim per
+    // cell) and with their square root on the boundary.
+    const unsigned int degree        = fe_space->degree();
+    const double       interior_dofs = dim * std::pow(degree, dim);
+    const double       coarse_cells  = triangulation.n_global_active_cells();
+    const double       boundary_dofs =
+      std::max(0.0, dof_handler.n_dofs() - interior_dofs * coarse_cells);
+    const auto check_mesh = [&](const std::string &mesh,
+                                const unsigned int refinements) {
+      const double growth = std::pow(2.0, refinements);
+      const double cells  = coarse_cells * std::pow(growth, dim);
+      memory_budget.check(mesh,
+                          cells,
+                          interior_dofs * cells + boundary_dofs * growth,
+                          linear_solver->name(),
+                          linear_solver->memory_per_dof(),
+                          "Mesh refinement/Initial global refinement" +
+                            std::string(
+                              refinement.strategy ==
+                                  MeshRefinement<dim>::Strategy::global
+                                ? " or Number of cycles"
+                                : ""));
+    };
+    const unsigned int first = refinement.initial_global_refinement;
+    check_mesh("the first mesh (cycle 0)", first);
+    if (refinement.strategy == MeshRefinement<dim>::Strategy::global &&
+        refinement.n_cycles > 1)
+      check_mesh("the mesh of the last cycle (" +
+                   std::to_string(refinement.n_cycles - 1) + ")",
+                 std::min(first + refinement.n_cycles - 1,
+                          std::max(first, refinement.max_level)));
   }
 
   template <int dim>
@@ -287,7 +343,9 @@ namespace lithostress
     system.constraints.clear();
     system.constraints.reinit(system.locally_relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, system.constraints);
-    prescribed_displacement.apply(dof_handler, *fe_space, system.constraints);
+    on_all_ranks(communicator, [&]() {
+      prescribed_displacement.apply(dof_handler, *fe_space, system.constraints);
+    });
     system.constraints.close();
     phase_done("constraints");
     system.reinit(dof_handler, communicator, linear_solver->needs_matrix());
@@ -332,6 +390,12 @@ namespace lithostress
                                        prescribed_displacement};
     statistics.solver = linear_solver->solve(problem, owned_solution);
     system.constraints.distribute(owned_solution);
+    const double norm = owned_solution.l2_norm();
+    if (!std::isfinite(norm))
+      throw ComputationError("the solution of the linear system is not "
+                             "finite (norm " +
+                             std::to_string(norm) + ", " +
+                             statistics.solver.solver + ")");
     solution.reinit(system.locally_owned,
                     system.locally_relevant,
                     communicator);
@@ -373,8 +437,11 @@ namespace lithostress
       }
     const auto samples = sample_stresses(
       dof_handler, *fe_space, *stress_model, griffith, solution, points);
-    if (!points.empty() && Utilities::MPI::this_mpi_process(communicator) == 0)
-      write_stress_samples(output_directory + "/point_values.csv", samples);
+    on_all_ranks(communicator, [&]() {
+      if (!points.empty() &&
+          Utilities::MPI::this_mpi_process(communicator) == 0)
+        write_stress_samples(output_directory + "/point_values.csv", samples);
+    });
     for (unsigned int k = 0; k < samples.size(); ++k)
       {
         const std::string at = "@P" + std::to_string(k + 1);
@@ -404,9 +471,12 @@ namespace lithostress
       {
         const auto profile =
           surface_profile(dof_handler, *fe_space, solution, surface_boundary);
-        if (Utilities::MPI::this_mpi_process(communicator) == 0)
-          write_surface_profile<dim>(output_directory + "/surface_profile.csv",
-                                     profile);
+        on_all_ranks(communicator, [&]() {
+          if (Utilities::MPI::this_mpi_process(communicator) == 0)
+            write_surface_profile<dim>(output_directory +
+                                         "/surface_profile.csv",
+                                       profile);
+        });
         if (thin_plate.enabled && cycle + 1 == refinement.n_cycles)
           thin_plate_profile = profile;
       }
@@ -421,6 +491,23 @@ namespace lithostress
       {
         run_cycles();
       }
+    catch (const RunInterrupted &stop)
+      {
+        // Stopped at a safe point: what is written is complete; add the
+        // statistics and the timing table so far, and say where it stopped.
+        std::string message = std::string(stop.what()) + " of cycle " +
+                              std::to_string(cycle) + "; ";
+        message += cycle == 0 ? "no cycle was complete"
+                              : "the results of cycles 0 to " +
+                                  std::to_string(cycle - 1) +
+                                  " are complete in " + output_directory;
+        log << '\n' << message << '\n';
+        write_statistics();
+        timer->print_summary();
+        log << '\n' << timer_text.str();
+        timer.reset();
+        throw RunInterrupted(stop.signal(), message);
+      }
     catch (...)
       {
         timer.reset();
@@ -430,14 +517,30 @@ namespace lithostress
 
   template <int dim>
   void
-  Simulator<dim>::run_cycles()
+  Simulator<dim>::start_output()
   {
     log.open(output_directory + "/log.txt");
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        std::ofstream out(output_directory + "/parameters.prm");
-        prm.print_parameters(out, ParameterHandler::ShortPRM);
-      }
+    on_all_ranks(communicator, [&]() {
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
+        {
+          OutputFile out(output_directory + "/parameters.prm");
+          prm.print_parameters(out, ParameterHandler::ShortPRM);
+          out.commit();
+        }
+    });
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::stop_if_requested(const std::string &phase) const
+  {
+    interruption::stop_if_requested(communicator, phase);
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::run_cycles()
+  {
     log << "lithostress: " << Utilities::MPI::n_mpi_processes(communicator)
         << " MPI rank(s), output in " << output_directory << "/" << std::endl;
     log << huge_pages_description() << '\n';
@@ -459,28 +562,56 @@ namespace lithostress
         triangulation.refine_global(refinement.initial_global_refinement);
       statistics.mesh_time = clock.wall_time();
     }
-    for (unsigned int cycle = 0; cycle < refinement.n_cycles; ++cycle)
+    for (cycle = 0; cycle < refinement.n_cycles; ++cycle)
       {
         if (cycle > 0)
           {
+            stop_if_requested("mesh refinement");
             TimerOutput::Scope t(*timer, "refine");
             Timer              clock(communicator, true);
-            refinement.refine(
-              triangulation, dof_handler, *fe_space, *stress_model, solution);
+            const double       dofs_per_cell =
+              static_cast<double>(dof_handler.n_dofs()) /
+              triangulation.n_global_active_cells();
+            refinement.refine(triangulation,
+                              dof_handler,
+                              *fe_space,
+                              *stress_model,
+                              solution,
+                              [&](const double cells) {
+                                memory_budget.check(
+                                  "the mesh of cycle " + std::to_string(cycle),
+                                  cells,
+                                  dofs_per_cell * cells,
+                                  linear_solver->name(),
+                                  linear_solver->memory_per_dof(),
+                                  "Mesh refinement/Number of cycles, Refine "
+                                  "fraction or Maximum level");
+                              });
             statistics.mesh_time = clock.wall_time();
           }
+        stop_if_requested("set-up");
         setup_dofs();
+        stop_if_requested("assembly");
         assemble_system();
+        // The first assembly has evaluated every load on the first mesh:
+        // the model is accepted, and only now is anything written.
+        if (cycle == 0)
+          start_output();
+        stop_if_requested("solve");
         solve();
+        stop_if_requested("postprocessing");
         postprocess(cycle);
         // The table so far, after every cycle: a run stopped by an error
         // in a later cycle keeps the cycles it finished.
-        if (!study.empty() &&
-            Utilities::MPI::this_mpi_process(communicator) == 0)
-          {
-            std::ofstream csv(output_directory + "/convergence.csv");
-            study.write_csv(csv);
-          }
+        on_all_ranks(communicator, [&]() {
+          if (!study.empty() &&
+              Utilities::MPI::this_mpi_process(communicator) == 0)
+            {
+              OutputFile csv(output_directory + "/convergence.csv");
+              study.write_csv(csv);
+              csv.commit();
+            }
+        });
         TimerOutput::Scope t(*timer, "output");
         if (!solution_output.last_only || cycle + 1 == refinement.n_cycles)
           solution_output.write(output_directory,
@@ -511,8 +642,10 @@ namespace lithostress
                                 prescribed_displacement,
                                 solution);
         log << '\n' << balance.table();
-        if (Utilities::MPI::this_mpi_process(communicator) == 0)
-          balance.write_csv(output_directory + "/force_balance.csv");
+        on_all_ranks(communicator, [&]() {
+          if (Utilities::MPI::this_mpi_process(communicator) == 0)
+            balance.write_csv(output_directory + "/force_balance.csv");
+        });
       }
     {
       TimerOutput::Scope t(*timer, "profiles and figures");
@@ -567,40 +700,43 @@ namespace lithostress
     const double peak_mb =
       Utilities::MPI::sum(usage.ru_maxrss / 1024.0, communicator);
     const double total = wall_clock.wall_time() - statistics.benchmark_time;
-    if (Utilities::MPI::this_mpi_process(communicator) != 0)
-      return;
-    std::ofstream out(output_directory + "/statistics.json");
-    out << "{\"solver\": \"" << statistics.solver.solver
-        << "\", \"dofs\": " << statistics.dofs
-        << ", \"cells\": " << statistics.cells
-        << ", \"ranks\": " << Utilities::MPI::n_mpi_processes(communicator)
-        << ", \"huge_pages\": "
-        << (huge_pages_for_large_arrays() ? "true" : "false")
-        << ", \"iterations\": " << statistics.solver.iterations
-        << ", \"setup_s\": " << statistics.mesh_time + statistics.setup_time
-        << ", \"assemble_s\": " << statistics.assemble_time
-        << ", \"solve_s\": " << statistics.solve_time
-        << ", \"preconditioner_setup_s\": " << statistics.solver.setup_time
-        << ", \"matvec_ms\": "
-        << 1e3 * statistics.solver.matrix_vector_product_time
-        << ", \"level_matvec_ms\": "
-        << 1e3 * statistics.solver.level_matrix_vector_product_time
-        << ", \"total_s\": " << total << ", \"peak_rss_mb\": " << peak_mb
-        << ", \"solver_memory_mb\": "
-        << statistics.solver.memory_bytes / 1048576. << ", \"phases\": {";
-    out << "\"set-up: mesh refinement\": " << statistics.mesh_time;
-    const char *separator = ", ";
-    for (const auto &[phase, seconds] : statistics.setup_phases)
-      {
-        out << separator << "\"set-up: " << phase << "\": " << seconds;
-        separator = ", ";
-      }
-    for (const auto &[phase, seconds] : statistics.solver.phases)
-      {
-        out << separator << '"' << phase << "\": " << seconds;
-        separator = ", ";
-      }
-    out << "}}\n";
+    on_all_ranks(communicator, [&]() {
+      if (Utilities::MPI::this_mpi_process(communicator) != 0)
+        return;
+      OutputFile out(output_directory + "/statistics.json");
+      out << "{\"solver\": \"" << statistics.solver.solver
+          << "\", \"dofs\": " << statistics.dofs
+          << ", \"cells\": " << statistics.cells
+          << ", \"ranks\": " << Utilities::MPI::n_mpi_processes(communicator)
+          << ", \"huge_pages\": "
+          << (huge_pages_for_large_arrays() ? "true" : "false")
+          << ", \"iterations\": " << statistics.solver.iterations
+          << ", \"setup_s\": " << statistics.mesh_time + statistics.setup_time
+          << ", \"assemble_s\": " << statistics.assemble_time
+          << ", \"solve_s\": " << statistics.solve_time
+          << ", \"preconditioner_setup_s\": " << statistics.solver.setup_time
+          << ", \"matvec_ms\": "
+          << 1e3 * statistics.solver.matrix_vector_product_time
+          << ", \"level_matvec_ms\": "
+          << 1e3 * statistics.solver.level_matrix_vector_product_time
+          << ", \"total_s\": " << total << ", \"peak_rss_mb\": " << peak_mb
+          << ", \"solver_memory_mb\": "
+          << statistics.solver.memory_bytes / 1048576. << ", \"phases\": {";
+      out << "\"set-up: mesh refinement\": " << statistics.mesh_time;
+      const char *separator = ", ";
+      for (const auto &[phase, seconds] : statistics.setup_phases)
+        {
+          out << separator << "\"set-up: " << phase << "\": " << seconds;
+          separator = ", ";
+        }
+      for (const auto &[phase, seconds] : statistics.solver.phases)
+        {
+          out << separator << '"' << phase << "\": " << seconds;
+          separator = ", ";
+        }
+      out << "}}\n";
+      out.commit();
+    });
   }
 
   template class Simulator<2>;

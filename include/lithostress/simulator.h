@@ -9,6 +9,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <lithostress/base/memory_budget.h>
 #include <lithostress/boundary_conditions/prescribed_displacement.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
@@ -98,6 +99,21 @@ namespace lithostress
     postprocess(const unsigned int cycle);
     void
     check_output_directory() const;
+    /**
+     * Before anything is written: every rigid-body motion is held
+     * (RigidBodySupport, on the coarse mesh) and the first mesh — with
+     * global refinement also the last — fits in memory (MemoryBudget).
+     */
+    void
+    check_well_posed(const std::string &length_unit);
+    /** Open log.txt and write parameters.prm: called once the first
+     * assembly has accepted the model. */
+    void
+    start_output();
+    /** Stop all ranks with RunInterrupted if any received SIGINT or
+     * SIGTERM (a safe point before @p phase of the current cycle). */
+    void
+    stop_if_requested(const std::string &phase) const;
     /** Write the last cycle's sizes, timings and peak memory as
      * `statistics.json` (read by bench/run). */
     void
@@ -132,8 +148,11 @@ namespace lithostress
     TrilinosWrappers::MPI::Vector             solution;
     std::unique_ptr<LinearSolver<dim>>        linear_solver;
     MeshRefinement<dim>                       refinement;
-    SolutionOutput<dim>                       solution_output;
-    std::vector<Point<dim>>                   points;
+    MemoryBudget                              memory_budget;
+    /** The cycle being computed (for the message of an interrupted run). */
+    unsigned int             cycle = 0;
+    SolutionOutput<dim>      solution_output;
+    std::vector<Point<dim>>  points;
     types::boundary_id       surface_boundary   = numbers::invalid_boundary_id;
     bool                     with_force_balance = true;
     ThinPlateFlexure         thin_plate;

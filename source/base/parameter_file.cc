@@ -4,6 +4,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -41,13 +42,13 @@ namespace lithostress
       {
         std::size_t  used  = 0;
         const double value = std::stod(trimmed, &used);
-        if (used == trimmed.size())
+        if (used == trimmed.size() && std::isfinite(value))
           return value;
       }
     catch (const std::exception &)
       {
       }
-    throw_input_error(entry, "<" + text + "> is not a number");
+    throw_input_error(entry, "<" + text + "> is not a finite number");
   }
 
   std::vector<std::string>

@@ -4,6 +4,8 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/base/parsed_expression.h>
 
+#include <cmath>
+#include <iomanip>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -15,6 +17,7 @@ namespace lithostress
                                           const std::string &constants_text,
                                           const std::string &entry)
       : expression(text)
+      , entry(entry)
   {
     std::map<std::string, double> constants;
     for (const std::string &item : split_list(constants_text))
@@ -56,7 +59,20 @@ namespace lithostress
   ParsedExpression<dim>::value(const Point<dim> &p, const double time) const
   {
     function->set_time(time);
-    return function->value(p);
+    const double v = function->value(p);
+    if (!std::isfinite(v))
+      {
+        std::ostringstream where;
+        where << std::setprecision(6) << "(x, y) = (" << p[0];
+        for (unsigned int d = 1; d < dim; ++d)
+          where << ", " << p[d];
+        where << ") m, t = " << time << " s";
+        throw_input_error(entry,
+                          "the expression <" + expression + "> is " +
+                            (std::isnan(v) ? "not a number" : "infinite") +
+                            " at " + where.str());
+      }
+    return v;
   }
 
   template class ParsedExpression<2>;

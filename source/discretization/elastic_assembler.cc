@@ -2,6 +2,7 @@
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
+#include <lithostress/base/input_error.h>
 #include <lithostress/discretization/elastic_assembler.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -194,63 +195,68 @@ namespace lithostress
     if (with_matrix)
       direct = std::make_unique<OwnedCellInsertion<dim>>(system);
 
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          hp_fe_values.reinit(cell);
-          const FEValues<dim> &fe_values = hp_fe_values.get_present_fe_values();
-          const unsigned int   n         = fe_values.dofs_per_cell;
-          const FEValuesExtractors::Vector u =
-            fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
-          const Material &material =
-            stress_model.materials(cell->material_id());
-          const ElasticModuli<dim> &moduli = stress_model.moduli(material.id);
+    // User functions (tractions, temperature changes) are evaluated in the
+    // cell loop; an error there on one rank reaches all before compress().
+    on_all_ranks(dof_handler.get_communicator(), [&]() {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            hp_fe_values.reinit(cell);
+            const FEValues<dim> &fe_values =
+              hp_fe_values.get_present_fe_values();
+            const unsigned int               n = fe_values.dofs_per_cell;
+            const FEValuesExtractors::Vector u =
+              fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+            const Material &material =
+              stress_model.materials(cell->material_id());
+            const ElasticModuli<dim> &moduli = stress_model.moduli(material.id);
 
-          cell_matrix.reinit(n, n);
-          cell_rhs.reinit(n);
-          dofs.resize(n);
-          cell->get_dof_indices(dofs);
+            cell_matrix.reinit(n, n);
+            cell_rhs.reinit(n);
+            dofs.resize(n);
+            cell->get_dof_indices(dofs);
 
-          // Without a global matrix, the right-hand side still needs
-          // −K_ij g_j for prescribed values g_j ≠ 0: compute the cell
-          // matrix on the cells that have them.
-          bool inhomogeneous = false;
-          if (!with_matrix)
-            for (const types::global_dof_index i : dofs)
-              if (system.constraints.is_inhomogeneously_constrained(i))
-                {
-                  inhomogeneous = true;
-                  break;
-                }
+            // Without a global matrix, the right-hand side still needs
+            // −K_ij g_j for prescribed values g_j ≠ 0: compute the cell
+            // matrix on the cells that have them.
+            bool inhomogeneous = false;
+            if (!with_matrix)
+              for (const types::global_dof_index i : dofs)
+                if (system.constraints.is_inhomogeneously_constrained(i))
+                  {
+                    inhomogeneous = true;
+                    break;
+                  }
 
-          if (with_matrix || inhomogeneous)
-            add_cell_stiffness(fe_values, moduli, cell_matrix);
-          for (const auto &load : loads.loads())
-            add_load_terms(*load,
-                           cell,
-                           fe_values,
-                           hp_face_values,
-                           u,
-                           material,
-                           moduli,
-                           cell_matrix,
-                           cell_rhs);
+            if (with_matrix || inhomogeneous)
+              add_cell_stiffness(fe_values, moduli, cell_matrix);
+            for (const auto &load : loads.loads())
+              add_load_terms(*load,
+                             cell,
+                             fe_values,
+                             hp_face_values,
+                             u,
+                             material,
+                             moduli,
+                             cell_matrix,
+                             cell_rhs);
 
-          if (with_matrix && direct->applies(dofs))
-            direct->add(dofs, cell_matrix, cell_rhs);
-          else if (with_matrix)
-            system.constraints.distribute_local_to_global(
-              cell_matrix, cell_rhs, dofs, system.matrix, system.rhs);
-          else if (inhomogeneous)
-            system.constraints.distribute_local_to_global(cell_rhs,
-                                                          dofs,
-                                                          system.rhs,
-                                                          cell_matrix);
-          else
-            system.constraints.distribute_local_to_global(cell_rhs,
-                                                          dofs,
-                                                          system.rhs);
-        }
+            if (with_matrix && direct->applies(dofs))
+              direct->add(dofs, cell_matrix, cell_rhs);
+            else if (with_matrix)
+              system.constraints.distribute_local_to_global(
+                cell_matrix, cell_rhs, dofs, system.matrix, system.rhs);
+            else if (inhomogeneous)
+              system.constraints.distribute_local_to_global(cell_rhs,
+                                                            dofs,
+                                                            system.rhs,
+                                                            cell_matrix);
+            else
+              system.constraints.distribute_local_to_global(cell_rhs,
+                                                            dofs,
+                                                            system.rhs);
+          }
+    });
     for (const auto &load : loads.loads())
       load->add_point_terms(dof_handler,
                             fe_space,

@@ -103,6 +103,39 @@ namespace lithostress
     Triangulation<dim> serial(tria.get_mesh_smoothing());
     GridIn<dim>        grid_in;
     grid_in.attach_triangulation(serial);
+    // Every $Section must end: a file cut off (a copy or a mesher that
+    // stopped half-way) is named as such, not by what the reader trips on.
+    {
+      std::ifstream            text(mesh_file);
+      std::string              line;
+      std::vector<std::string> open_sections;
+      unsigned int             number = 0;
+      while (std::getline(text, line))
+        {
+          ++number;
+          line = Utilities::trim(line);
+          if (line.size() < 2 || line[0] != '$')
+            continue;
+          if (line.compare(0, 4, "$End") == 0)
+            {
+              if (open_sections.empty() ||
+                  open_sections.back() != line.substr(4))
+                throw_input_error("Geometry/Gmsh/Mesh file",
+                                  "<" + mesh_file + ">: line " +
+                                    std::to_string(number) + " (" + line +
+                                    ") closes a section that is not open");
+              open_sections.pop_back();
+            }
+          else
+            open_sections.push_back(line.substr(1));
+        }
+      if (!open_sections.empty())
+        throw_input_error("Geometry/Gmsh/Mesh file",
+                          "<" + mesh_file + "> is truncated: its $" +
+                            open_sections.back() + " section has no $End" +
+                            open_sections.back() + " (the file ends at line " +
+                            std::to_string(number) + ")");
+    }
     std::ifstream in(mesh_file);
     try
       {
@@ -110,10 +143,9 @@ namespace lithostress
       }
     catch (const ExceptionBase &exc)
       {
-        std::ostringstream message;
-        exc.print_info(message);
         throw_input_error("Geometry/Gmsh/Mesh file",
-                          "cannot read <" + mesh_file + ">: " + message.str());
+                          "cannot read <" + mesh_file +
+                            ">: " + one_line_message(exc));
       }
     if (!serial.all_reference_cells_are_hyper_cube())
       throw_input_error("Geometry/Gmsh/Mesh file",

@@ -195,25 +195,28 @@ namespace lithostress
           // Collected first and checked on every rank, so that no rank
           // leaves the collective sum below alone.
           double lowest = 0;
-          for (const auto &cell : tria.active_cell_iterators())
-            if (cell->is_locally_owned())
-              for (const unsigned int f : cell->face_indices())
-                if (cell->face(f)->at_boundary() &&
-                    cell->face(f)->boundary_id() == part.id)
-                  {
-                    face_values.reinit(cell, f);
-                    for (const unsigned int q :
-                         face_values.quadrature_point_indices())
-                      {
-                        const double w =
-                          part.profile->value(face_values.quadrature_point(q));
-                        if (!(w >= 0))
-                          lowest = std::isnan(w)
-                                     ? -std::numeric_limits<double>::infinity()
-                                     : std::min(lowest, w);
-                        integral += w * face_values.JxW(q);
-                      }
-                  }
+          on_all_ranks(communicator, [&]() {
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned())
+                for (const unsigned int f : cell->face_indices())
+                  if (cell->face(f)->at_boundary() &&
+                      cell->face(f)->boundary_id() == part.id)
+                    {
+                      face_values.reinit(cell, f);
+                      for (const unsigned int q :
+                           face_values.quadrature_point_indices())
+                        {
+                          const double w = part.profile->value(
+                            face_values.quadrature_point(q));
+                          if (!(w >= 0))
+                            lowest =
+                              std::isnan(w)
+                                ? -std::numeric_limits<double>::infinity()
+                                : std::min(lowest, w);
+                          integral += w * face_values.JxW(q);
+                        }
+                    }
+          });
           lowest = Utilities::MPI::min(lowest, communicator);
           if (lowest < 0 || std::isnan(lowest))
             throw_input_error("Loads/Tractions/" + part.name +

@@ -1,7 +1,10 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/loads/thermal_strain.h>
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <sstream>
 
@@ -111,6 +114,26 @@ namespace lithostress
         for (const unsigned int i : fe_values.dof_indices())
           cell_rhs(i) -= s * fe_values[displacement].divergence(i, q);
       }
+  }
+
+  template <int dim>
+  void
+  ThermalStrain<dim>::prepare_for_mesh(const Triangulation<dim> &tria,
+                                       const Mapping<dim>       &mapping,
+                                       const Quadrature<dim - 1> &)
+  {
+    const FE_Q<dim>          fe(1);
+    const QGaussLobatto<dim> support(3);
+    FEValues<dim> values(mapping, fe, support, update_quadrature_points);
+    on_all_ranks(tria.get_communicator(), [&]() {
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            values.reinit(cell);
+            for (const Point<dim> &p : values.get_quadrature_points())
+              temperature_change->value(p);
+          }
+    });
   }
 
   template <int dim>

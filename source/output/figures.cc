@@ -4,6 +4,7 @@
 
 #include <lithostress/base/input_error.h>
 #include <lithostress/output/figures.h>
+#include <lithostress/output/output_file.h>
 
 #include <cmath>
 #include <cstdio>
@@ -91,14 +92,17 @@ namespace lithostress
                 }
             }
     const auto all_segments = Utilities::MPI::gather(comm, segments, 0);
-    if (root)
-      {
-        std::ofstream out(directory + "/mesh_outline.csv");
-        out << "x0,y0,x1,y1\n" << std::setprecision(10);
-        for (const auto &rank_segments : all_segments)
-          for (const auto &s : rank_segments)
-            out << s[0] << ',' << s[1] << ',' << s[2] << ',' << s[3] << '\n';
-      }
+    on_all_ranks(comm, [&]() {
+      if (root)
+        {
+          OutputFile out(directory + "/mesh_outline.csv");
+          out << "x0,y0,x1,y1\n" << std::setprecision(10);
+          for (const auto &rank_segments : all_segments)
+            for (const auto &s : rank_segments)
+              out << s[0] << ',' << s[1] << ',' << s[2] << ',' << s[3] << '\n';
+          out.commit();
+        }
+    });
 
     // The stress crosses on a regular grid over the body.
     const BoundingBox<dim> box(tria.get_vertices());
@@ -126,14 +130,17 @@ namespace lithostress
         }
     const auto samples = sample_stresses(
       dof_handler, fe_space, stress_model, griffith, solution, grid, true);
-    if (root)
-      {
-        write_stress_samples(directory + "/principal_stresses.csv", samples);
-        std::ofstream json(directory + "/figures.json");
-        json << "{\"title\": \"" << title << "\", \"length_unit\": \""
-             << length_unit << "\", \"length_scale\": " << length_scale
-             << ", \"stress_unit_scale\": 1e6}\n";
-      }
+    on_all_ranks(comm, [&]() {
+      if (root)
+        {
+          write_stress_samples(directory + "/principal_stresses.csv", samples);
+          OutputFile json(directory + "/figures.json");
+          json << "{\"title\": \"" << title << "\", \"length_unit\": \""
+               << length_unit << "\", \"length_scale\": " << length_scale
+               << ", \"stress_unit_scale\": 1e6}\n";
+          json.commit();
+        }
+    });
   }
 
   template <int dim>

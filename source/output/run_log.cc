@@ -12,8 +12,11 @@ namespace lithostress
   void
   RunLog::open(const std::string &filename)
   {
-    if (is_root)
-      file.open(filename);
+    if (!is_root)
+      return;
+    file.open(filename);
+    file << before_open << std::flush;
+    before_open.clear();
   }
 
   void
@@ -21,7 +24,9 @@ namespace lithostress
   {
     std::cout << text;
     if (file.is_open())
-      file << text;
+      file << text << std::flush;
+    else
+      before_open += text;
   }
 
   RunLog &
@@ -32,6 +37,12 @@ namespace lithostress
         manipulator(std::cout);
         if (file.is_open())
           manipulator(file);
+        else
+          {
+            std::ostringstream text;
+            manipulator(text);
+            before_open += text.str();
+          }
       }
     return *this;
   }

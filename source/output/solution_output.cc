@@ -1,6 +1,8 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <lithostress/base/input_error.h>
+#include <lithostress/output/output_file.h>
 #include <lithostress/output/solution_output.h>
 #include <lithostress/postprocess/stress_postprocessor.h>
 
@@ -85,11 +87,15 @@ namespace lithostress
     const std::string pvtu = data_out.write_vtu_with_pvtu_record(
       directory + "/", "solution", cycle, dof_handler.get_communicator(), 3);
     records.emplace_back(cycle, pvtu);
-    if (Utilities::MPI::this_mpi_process(dof_handler.get_communicator()) == 0)
-      {
-        std::ofstream pvd(directory + "/solution.pvd");
-        DataOutBase::write_pvd_record(pvd, records);
-      }
+    on_all_ranks(dof_handler.get_communicator(), [&]() {
+      if (Utilities::MPI::this_mpi_process(dof_handler.get_communicator()) == 0)
+        {
+          // The record is written after the pieces it lists are complete.
+          OutputFile pvd(directory + "/solution.pvd");
+          DataOutBase::write_pvd_record(pvd, records);
+          pvd.commit();
+        }
+    });
   }
 
   template class SolutionOutput<2>;

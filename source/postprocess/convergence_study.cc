@@ -127,7 +127,11 @@ namespace lithostress
         for (unsigned int c = 0; c < columns.size(); ++c)
           {
             const double d = derived(r, c);
-            out << ',' << rows[r].values[c] << ',';
+            // Empty fields for values a cycle does not have.
+            out << ',';
+            if (!std::isnan(rows[r].values[c]))
+              out << rows[r].values[c];
+            out << ',';
             if (!std::isnan(d))
               out << d;
           }

@@ -3,6 +3,7 @@
 
 #include <lithostress/base/input_error.h>
 #include <lithostress/discretization/elastic_assembler.h>
+#include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/force_balance.h>
 
 #include <fstream>
@@ -52,7 +53,7 @@ namespace lithostress
   void
   ForceBalance<dim>::write_csv(const std::string &file_name) const
   {
-    std::ofstream out(file_name);
+    OutputFile out(file_name);
     out << "kind,name,F_x,F_y\n" << std::setprecision(12);
     for (const auto &f : loads)
       out << "load,\"" << f.first << "\"," << f.second[0] << ',' << f.second[1]
@@ -62,6 +63,7 @@ namespace lithostress
           << f.second[1] << '\n';
     const Tensor<1, dim> sum = imbalance();
     out << "sum,all," << sum[0] << ',' << sum[1] << '\n';
+    out.commit();
   }
 
   template <int dim>

@@ -36,6 +36,7 @@ namespace lithostress
           box.extend(0.1 * c->diameter());
           owned_cells.emplace_back(c, box);
         }
+    std::exception_ptr error;
     for (unsigned int k = 0; k < points.size(); ++k)
       {
         // The first owned cell (in CellId order) that contains the point;
@@ -84,33 +85,44 @@ namespace lithostress
         if (static_cast<unsigned int>(winner) !=
             Utilities::MPI::this_mpi_process(comm))
           continue;
-        const auto           &fe = cell->get_fe();
-        const Quadrature<dim> q(GeometryInfo<dim>::project_to_unit_cell(unit));
-        FEValues<dim>         fe_values(fe_space.mapping(),
-                                fe,
-                                q,
-                                update_values | update_gradients |
-                                  update_quadrature_points);
-        fe_values.reinit(cell);
-        const auto u =
-          fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
-        std::vector<Tensor<1, dim>> value(1);
-        std::vector<Tensor<2, dim>> gradient(1);
-        fe_values[u].get_function_values(solution, value);
-        fe_values[u].get_function_gradients(solution, gradient);
-        const StressState<dim> stress =
-          stress_model.stress(cell->material_id(),
-                              fe_values.quadrature_point(0),
-                              symmetrize(gradient[0]));
-        double *v = &local[k * n_values];
-        for (unsigned int d = 0; d < dim; ++d)
-          v[d] = value[0][d];
-        for (unsigned int a = 0; a < dim; ++a)
-          for (unsigned int b = 0; b < dim; ++b)
-            v[dim + a * dim + b] = stress.in_plane[a][b];
-        v[dim + dim * dim]     = stress.zz;
-        v[dim + dim * dim + 1] = cell->material_id();
+        // The stress evaluates user functions (a temperature change): an
+        // error here is made collective after the loop.
+        try
+          {
+            const auto           &fe = cell->get_fe();
+            const Quadrature<dim> q(
+              GeometryInfo<dim>::project_to_unit_cell(unit));
+            FEValues<dim> fe_values(fe_space.mapping(),
+                                    fe,
+                                    q,
+                                    update_values | update_gradients |
+                                      update_quadrature_points);
+            fe_values.reinit(cell);
+            const auto u =
+              fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+            std::vector<Tensor<1, dim>> value(1);
+            std::vector<Tensor<2, dim>> gradient(1);
+            fe_values[u].get_function_values(solution, value);
+            fe_values[u].get_function_gradients(solution, gradient);
+            const StressState<dim> stress =
+              stress_model.stress(cell->material_id(),
+                                  fe_values.quadrature_point(0),
+                                  symmetrize(gradient[0]));
+            double *v = &local[k * n_values];
+            for (unsigned int d = 0; d < dim; ++d)
+              v[d] = value[0][d];
+            for (unsigned int a = 0; a < dim; ++a)
+              for (unsigned int b = 0; b < dim; ++b)
+                v[dim + a * dim + b] = stress.in_plane[a][b];
+            v[dim + dim * dim]     = stress.zz;
+            v[dim + dim * dim + 1] = cell->material_id();
+          }
+        catch (const InputError &)
+          {
+            error = std::current_exception();
+          }
       }
+    rethrow_on_all_ranks(comm, error);
     std::vector<double> global(local.size());
     Utilities::MPI::sum(local, comm, global);
 

@@ -153,9 +153,13 @@ namespace lithostress
                                              solution,
                                              points,
                                              true);
-        if (Utilities::MPI::this_mpi_process(comm) == 0)
-          write_stress_samples(
-            directory + "/stress_depth_" + labels[l] + ".csv", samples, y_top);
+        on_all_ranks(comm, [&]() {
+          if (Utilities::MPI::this_mpi_process(comm) == 0)
+            write_stress_samples(directory + "/stress_depth_" + labels[l] +
+                                   ".csv",
+                                 samples,
+                                 y_top);
+        });
       }
   }
 

@@ -1,5 +1,8 @@
 #include <lithostress/base/input_error.h>
+#include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/stress_sampling.h>
+
+#include <cmath>
 
 #include <fstream>
 #include <iomanip>
@@ -42,9 +45,7 @@ namespace lithostress
                        const std::vector<StressSample<dim>> &samples,
                        const std::optional<double>           surface_y)
   {
-    std::ofstream out(file_name);
-    if (!out)
-      throw ComputationError("cannot write <" + file_name + ">");
+    OutputFile out(file_name);
     out << "x,y," << (surface_y ? "depth," : "")
         << "u_x,u_y,sigma_xx,sigma_yy,sigma_xy,sigma_zz,sigma_1,sigma_2,"
            "angle_1,deviatoric_xx,deviatoric_yy,deviatoric_zz,deviatoric_xy,"
@@ -64,10 +65,14 @@ namespace lithostress
               << a.principal.sigma_1 << ',' << a.principal.sigma_2 << ','
               << a.principal.angle_1 * 180 / numbers::PI << ','
               << a.deviatoric_xx << ',' << a.deviatoric_yy << ','
-              << a.deviatoric_zz << ',' << a.deviatoric_xy << ','
-              << a.degree_of_failure << ',' << a.regime << ','
-              << a.fracture_angle << '\n';
+              << a.deviatoric_zz << ',' << a.deviatoric_xy << ',';
+          // C is infinite where a material is not tested (no tensile
+          // strength): an empty field, as every number is finite.
+          if (std::isfinite(a.degree_of_failure))
+            out << a.degree_of_failure;
+          out << ',' << a.regime << ',' << a.fracture_angle << '\n';
         }
+    out.commit();
   }
 
   template std::vector<StressSample<2>>

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
 
+#include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/surface_profile.h>
 
 #include <algorithm>
@@ -87,11 +88,12 @@ namespace lithostress
     const std::string                                  &filename,
     const std::vector<std::array<double, 1 + 2 * dim>> &profile)
   {
-    std::ofstream out(filename);
+    OutputFile out(filename);
     out << "x,u_x,u_y,y\n"
         << std::setprecision(std::numeric_limits<double>::max_digits10);
     for (const auto &row : profile)
       out << row[0] << ',' << row[2] << ',' << row[3] << ',' << row[1] << '\n';
+    out.commit();
   }
 
   template std::vector<std::array<double, 5>>

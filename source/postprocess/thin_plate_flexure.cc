@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <lithostress/base/input_error.h>
+#include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
 
 #include <cmath>
@@ -134,8 +135,7 @@ namespace lithostress
     log << out.str();
     if (!csv_file.empty())
       {
-        std::ofstream file(csv_file);
-        file << csv.str();
+        write_file_atomically(csv_file, csv.str());
       }
   }
 } // namespace lithostress

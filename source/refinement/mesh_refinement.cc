@@ -325,7 +325,8 @@ namespace lithostress
     const DoFHandler<dim>                     &dof_handler,
     const FiniteElementSpace<dim>             &fe_space,
     const StressModel<dim>                    &stress_model,
-    const TrilinosWrappers::MPI::Vector       &solution) const
+    const TrilinosWrappers::MPI::Vector       &solution,
+    const std::function<void(double)>         &check_new_mesh) const
   {
     if (strategy == Strategy::global)
       {
@@ -351,6 +352,21 @@ namespace lithostress
               static_cast<unsigned int>(cell->level()) >= max_level)
             cell->clear_refine_flag();
       }
+    // The new mesh's size from the flags: each refined cell becomes 2^dim,
+    // each family of 2^dim coarsened cells one.
+    tria.prepare_coarsening_and_refinement();
+    double refined = 0, coarsened = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          refined += cell->refine_flag_set() ? 1 : 0;
+          coarsened += cell->coarsen_flag_set() ? 1 : 0;
+        }
+    const unsigned int children = GeometryInfo<dim>::max_children_per_cell;
+    check_new_mesh(
+      tria.n_global_active_cells() +
+      Utilities::MPI::sum((children - 1) * (refined - coarsened / children),
+                          tria.get_communicator()));
     tria.execute_coarsening_and_refinement();
   }
 

@@ -39,12 +39,14 @@ namespace lithostress
 
     timer.restart();
     solution.reinit(system.locally_owned, dof_handler.get_communicator());
-    const double                            rhs_norm = system.rhs.l2_norm();
+    const double rhs_norm = system.rhs.l2_norm();
+    check_right_hand_side(rhs_norm);
     SolverControl                           control(settings.max_iterations,
                           settings.relative_tolerance * rhs_norm,
                           false,
                           false);
     SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    stop_on_signal(cg, dof_handler.get_communicator());
     if (rhs_norm == 0)
       solution = 0;
     else
@@ -55,15 +57,15 @@ namespace lithostress
           }
         catch (const SolverControl::NoConvergence &exc)
           {
-            throw ComputationError(
-              "CG with AMG did not converge: residual " +
-              std::to_string(exc.last_residual / rhs_norm) +
-              " (relative) after " + std::to_string(exc.last_step) +
-              " iterations; raise Solver/Maximum iterations or use "
-              "Solver/Type = direct");
+            rethrow_solver_failure(exc,
+                                   dof_handler.get_communicator(),
+                                   "CG with AMG",
+                                   rhs_norm,
+                                   "raise Solver/Maximum iterations or use "
+                                   "Solver/Type = direct");
           }
       }
-    report.iterations     = control.last_step();
+    report.iterations     = iterations_of(control);
     report.final_residual = rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
     report.solve_time     = timer.wall_time();
     if (settings.time_matrix_vector_product)

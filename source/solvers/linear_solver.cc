@@ -7,10 +7,49 @@
 #include <lithostress/solvers/multigrid_solver.h>
 
 #include <algorithm>
+#include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace lithostress
 {
+  void
+  check_right_hand_side(const double norm)
+  {
+    if (!std::isfinite(norm))
+      throw ComputationError(
+        "the right-hand side of the linear system is not finite (norm " +
+        std::to_string(norm) + "): a load evaluates to a NaN or infinity");
+  }
+
+  unsigned int
+  iterations_of(const SolverControl &control)
+  {
+    return control.last_step() == numbers::invalid_unsigned_int
+             ? 0
+             : control.last_step();
+  }
+
+  void
+  rethrow_solver_failure(const SolverControl::NoConvergence &failure,
+                         const MPI_Comm                      communicator,
+                         const std::string                  &solver,
+                         const double                        rhs_norm,
+                         const std::string                  &advice)
+  {
+    const int signal = interruption::signal_on_any_rank(communicator);
+    if (signal != 0)
+      throw RunInterrupted(signal,
+                           solver + " iteration " +
+                             std::to_string(failure.last_step));
+    std::ostringstream message;
+    message << solver << " did not converge: relative residual "
+            << std::setprecision(3) << failure.last_residual / rhs_norm
+            << " after " << failure.last_step << " iterations; " << advice;
+    throw ComputationError(message.str());
+  }
+
   double
   fastest_of(const unsigned int           n,
              const MPI_Comm               communicator,

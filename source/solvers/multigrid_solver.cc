@@ -236,7 +236,8 @@ namespace lithostress
       report.setup_time = total.wall_time();
 
       timer.restart();
-      const double  rhs_norm = rhs.l2_norm();
+      const double rhs_norm = rhs.l2_norm();
+      check_right_hand_side(rhs_norm);
       SolverControl control(settings.max_iterations,
                             settings.relative_tolerance * rhs_norm,
                             false,
@@ -244,21 +245,22 @@ namespace lithostress
       if (rhs_norm > 0)
         {
           SolverCG<VectorType> cg(control);
+          stop_on_signal(cg, communicator);
           try
             {
               cg.solve(*system_operator, x, rhs, *preconditioner);
             }
           catch (const SolverControl::NoConvergence &exc)
             {
-              throw ComputationError(
-                "CG with matrix-free multigrid did not converge: residual " +
-                std::to_string(exc.last_residual / rhs_norm) +
-                " (relative) after " + std::to_string(exc.last_step) +
-                " iterations; raise Solver/Maximum iterations or use "
-                "Solver/Type = AMG");
+              rethrow_solver_failure(exc,
+                                     communicator,
+                                     "CG with matrix-free multigrid",
+                                     rhs_norm,
+                                     "raise Solver/Maximum iterations or use "
+                                     "Solver/Type = AMG");
             }
         }
-      report.iterations = control.last_step();
+      report.iterations = iterations_of(control);
       report.final_residual =
         rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
       report.solve_time = timer.wall_time();

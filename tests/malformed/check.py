@@ -1,8 +1,11 @@
-"""Malformed input: each .prm here has one defect. The program must exit
-with status 1 and one clear line on stderr that names the entry or file,
-without a crash or stack trace, and must not touch an earlier run's
-results in the output directory."""
-import sys, os, subprocess, shutil
+"""Malformed and ill-posed input: each .prm here has one defect (a wrong
+entry, a model free to move as a rigid body, a user function that is NaN or
+infinite somewhere, a mesh too large for memory, a broken Gmsh file, a bad
+override given in <name>.args, where {here} stands for this directory). On 1 and on 2 MPI ranks the program must end
+within seconds with exit status 1 and one line on stderr that names the
+entry or file, the same line on both, without a signal, a crash or a stack
+trace, and must leave an earlier run's output directory byte-identical."""
+import sys, os, subprocess, shutil, time
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import lithotest
 from lithotest import check, finish, env, BINARY
@@ -35,26 +38,96 @@ expected = {
     "resultant_one_component": "Resultant force",
     "profile_line_outside_body": "Stress-depth profiles",
     "multigrid_for_degree_four": "Solver/Type",
+    # Ill-posed: a rigid-body motion nothing holds (found on the coarse
+    # mesh, before anything is solved or written).
+    "free_in_all": "free to move as a rigid body",
+    "free_in_y": "free to translate in y",
+    "free_in_x": "free to translate in x",
+    "free_in_x_spring_only": "free to translate in x",
+    "free_rotation": "free to rotate about (0, 0)",
+    # Non-finite values from each kind of user function, named with the
+    # entry and where they occur.
+    "displacement_infinite": "Boundary conditions/base/y>: the expression <1/0> is infinite at",
+    "displacement_not_a_number": "Boundary conditions/base/y>: the expression <1e-3*sqrt(x - 5000)> is not a number at",
+    "traction_infinite_somewhere": "Loads/Tractions/top/Normal traction>: the expression <x > 5000 ? 1/0 : -1e6> is infinite at",
+    "shear_traction_not_a_number": "Shear traction>: the expression <1e5*log(x - 2000)> is not a number at",
+    "resultant_profile_not_a_number": "Resultant profile>: the expression <sqrt(x - 5000)> is not a number at",
+    "temperature_change_infinite": "Temperature change>: the expression <y < -5000 ? 1/0 : 100> is infinite at",
+    "density_infinite": "Density",
+    "reference_column_infinite": "Reference column",
+    "fluid_density_infinite": "Fluid densities",
+    # Resources.
+    "mesh_too_large": "Resources/Memory limit>: the first mesh (cycle 0) would have about 1.07e+09 cells",
+    "memory_limit_too_small": "the limit set by Resources/Memory limit",
+    "memory_limit_unparsable": "Resources/Memory limit",
+    # Broken mesh files and command lines.
+    "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",
+    "gmsh_missing_node": "gmsh_missing_node.msh>: While creating cell 11 (which is numbered as 12 in the input file), you are referencing a vertex with index 19",
+    "override_without_value": "Mesh refinement/Number of cycles",
+    "override_empty_value": "Number of cycles",
 }
 files = sorted(f[:-4] for f in os.listdir(HERE) if f.endswith(".prm"))
-check(len(files) >= 10 and set(files) == set(expected), "%d malformed inputs, each with an expected message" % len(files))
+check(len(files) >= 40 and set(files) == set(expected),
+      "%d malformed inputs, each with an expected message" % len(files))
+
+
+def tree(directory):
+    """Every file under @directory with its bytes."""
+    result = {}
+    for root, _, names in os.walk(directory):
+        for n in names:
+            path = os.path.join(root, n)
+            with open(path, "rb") as f:
+                result[os.path.relpath(path, directory)] = f.read()
+    return result
+
 
 earlier = os.path.abspath("earlier_results")
+slowest = 0.0
 for name in files:
-    shutil.rmtree(earlier, ignore_errors=True)
-    os.makedirs(earlier)
-    with open(os.path.join(earlier, "solution.pvd"), "w") as f:
-        f.write("results of an earlier run\n")
-    cmd = [BINARY, os.path.join(HERE, name + ".prm")]
-    if name != "unwritable_output_directory":
-        cmd += ["--set", "Output directory=" + earlier]
-    r = subprocess.run(cmd, capture_output=True, text=True, env=env())
-    lines = [l for l in r.stderr.splitlines() if l.strip()]
-    check(r.returncode == 1, "%s: exit status %d (expected 1)" % (name, r.returncode))
-    check(len(lines) == 1, "%s: one line of error: %s" % (name, lines[0] if lines else "(none)"))
-    check(any(expected.get(name, "\0") in l for l in lines), "%s: message names <%s>" % (name, expected.get(name)))
-    check("Stacktrace" not in r.stderr and "An error occurred" not in r.stderr, "%s: no stack trace" % name)
-    check(sorted(os.listdir(earlier)) == ["solution.pvd"] and
-          open(os.path.join(earlier, "solution.pvd")).read() == "results of an earlier run\n",
-          "%s: earlier results untouched" % name)
+    messages = []
+    for ranks in (1, 2):
+        label = "%s (%d rank%s)" % (name, ranks, "s" if ranks > 1 else "")
+        shutil.rmtree(earlier, ignore_errors=True)
+        os.makedirs(os.path.join(earlier, "figures"))
+        with open(os.path.join(earlier, "solution.pvd"), "w") as f:
+            f.write("results of an earlier run\n")
+        with open(os.path.join(earlier, "figures", "surface_profile.csv"), "w") as f:
+            f.write("x,u_x,u_y,y\n0,1,2,3\n")
+        before = tree(earlier)
+        cmd = [BINARY, os.path.join(HERE, name + ".prm")]
+        if name == "unwritable_output_directory":
+            # A directory below an earlier result file cannot be made.
+            cmd += ["--set", "Output directory=" + os.path.join(earlier, "solution.pvd", "new")]
+        else:
+            cmd += ["--set", "Output directory=" + earlier]
+        args = os.path.join(HERE, name + ".args")
+        if os.path.exists(args):
+            cmd += [a.replace("{here}", HERE) for a in open(args).read().splitlines() if a]
+        environment = env()
+        if ranks > 1:
+            cmd = ["mpirun", "-np", str(ranks)] + cmd
+            # Open MPI's own banner about a rank's non-zero exit (mpirun -q).
+            environment["OMPI_MCA_orte_execute_quiet"] = "1"
+        start = time.time()
+        try:
+            r = subprocess.run(cmd, capture_output=True, text=True, env=environment, timeout=120)
+        except subprocess.TimeoutExpired:
+            check(False, "%s: ends (killed after 120 s: a hang)" % label)
+            continue
+        seconds = time.time() - start
+        slowest = max(slowest, seconds)
+        lines = [l for l in r.stderr.splitlines() if l.strip()]
+        check(r.returncode == 1, "%s: exit status %d (expected 1; negative = signal)" % (label, r.returncode))
+        check(len(lines) == 1, "%s: one line of error: %s" % (label, " | ".join(lines) if lines else "(none)"))
+        check(any(expected.get(name, "\0") in l for l in lines), "%s: message names <%s>" % (label, expected.get(name)))
+        check("Stacktrace" not in r.stderr and "An error occurred" not in r.stderr and
+              "MPI_ABORT" not in r.stderr and "Signal" not in r.stderr, "%s: no stack trace, abort or signal" % label)
+        check(seconds < 30, "%s: ends within seconds (%.1f s)" % (label, seconds))
+        check(tree(earlier) == before, "%s: earlier results byte-identical" % label)
+        messages.append(lines[0] if lines else "")
+    # The memory estimate includes each rank's footprint, so it differs.
+    if not name.startswith("mem"):
+        check(len(messages) == 2 and messages[0] == messages[1], "%s: the same message on 1 and 2 ranks" % name)
+print("slowest run: %.1f s" % slowest)
 finish()

@@ -1,6 +1,9 @@
 #ifndef lithostress_base_input_error_h
 #define lithostress_base_input_error_h
 
+#include <mpi.h>
+
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -34,6 +37,44 @@ namespace lithostress
   public:
     using std::runtime_error::runtime_error;
   };
+
+  /**
+   * The collective part of on_all_ranks(): @p error is this rank's error
+   * (null if none; only InputError or
+   * ComputationError); throws on every rank if any rank has one.
+   */
+  void
+  rethrow_on_all_ranks(const MPI_Comm communicator, std::exception_ptr error);
+
+  /**
+   * Make the outcome of rank-local work collective. @p local_work must not
+   * communicate (a loop over owned cells that evaluates user functions, a
+   * file written by rank 0); if it throws an InputError or ComputationError
+   * on some ranks, every rank throws the error of the lowest such rank, so
+   * that no rank waits in a collective call another rank has left and all
+   * ranks end with the same message (doc/architecture.md, error policy).
+   * Other exceptions are internal errors and pass through unchanged.
+   */
+  template <typename LocalWork>
+  void
+  on_all_ranks(const MPI_Comm communicator, const LocalWork &local_work)
+  {
+    std::exception_ptr error;
+    try
+      {
+        local_work();
+      }
+    catch (const InputError &)
+      {
+        error = std::current_exception();
+      }
+    catch (const ComputationError &)
+      {
+        error = std::current_exception();
+      }
+    rethrow_on_all_ranks(communicator, error);
+  }
+
 } // namespace lithostress
 
 #endif

@@ -14,7 +14,10 @@ namespace lithostress
    * A scalar function of position (x, y in metres) and time t, given in the
    * input as a muparser expression with optional constants
    * ("P=5e4, c=1.25"). Parsed and evaluated once when configured, so that a
-   * malformed expression is an input error naming its entry.
+   * malformed expression is an input error naming its entry. Every value is
+   * checked where it is evaluated: a NaN or an infinity (`1/0`, `sqrt(-1)`
+   * somewhere in the body) is an InputError naming the entry, the point and
+   * the time.
    */
   template <int dim>
   class ParsedExpression
@@ -25,6 +28,7 @@ namespace lithostress
                      const std::string &constants,
                      const std::string &entry);
 
+    /** The value at @p p [m] and @p time [s]; InputError if not finite. */
     double
     value(const Point<dim> &p, const double time = 0) const;
 
@@ -36,6 +40,7 @@ namespace lithostress
 
   private:
     std::string                          expression;
+    std::string                          entry;
     std::unique_ptr<FunctionParser<dim>> function;
   };
 } // namespace lithostress

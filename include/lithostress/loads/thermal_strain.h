@@ -49,6 +49,17 @@ namespace lithostress
                        SymmetricTensor<2, dim>  &stress,
                        double                   &sigma_zz) const override;
 
+    /**
+     * Evaluate Delta T at the support points of Q2 on every owned cell: the
+     * points where output and refinement evaluate the stress. A NaN or
+     * infinity there is an input error on all ranks before anything is
+     * solved or written (assembly checks the quadrature points).
+     */
+    void
+    prepare_for_mesh(const Triangulation<dim>  &tria,
+                     const Mapping<dim>        &mapping,
+                     const Quadrature<dim - 1> &face_quadrature) override;
+
     std::string
     description() const override;
 

@@ -13,14 +13,18 @@ namespace lithostress
 
   /**
    * The run's log: what rank 0 prints goes both to the screen and to
-   * `log.txt` in the output directory (once it is opened).
+   * `log.txt` in the output directory. What is printed before the file is
+   * opened — once the model has been accepted, so that a rejected model
+   * leaves the output directory untouched — is kept and written first.
+   * Each line is flushed: the log of a stopped run is complete up to its
+   * last line.
    */
   class RunLog
   {
   public:
     explicit RunLog(const MPI_Comm communicator);
 
-    /** Start writing to @p filename as well as to the screen. */
+    /** Start writing to @p filename (what was printed so far first). */
     void
     open(const std::string &filename);
 
@@ -53,6 +57,8 @@ namespace lithostress
 
     bool          is_root;
     std::ofstream file;
+    /** What was printed before open(). */
+    std::string before_open;
   };
 } // namespace lithostress
 

@@ -9,6 +9,8 @@
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/materials/stress_model.h>
 
+#include <functional>
+
 namespace lithostress
 {
   /**
@@ -47,13 +49,19 @@ namespace lithostress
     void
     parse_parameters(ParameterHandler &prm);
 
-    /** Refine @p tria once, as configured; @p solution has ghost values. */
+    /**
+     * Refine @p tria once, as configured; @p solution has ghost values.
+     * Once the cells are marked, and before the mesh changes,
+     * @p check_new_mesh is called on all ranks with the number of active
+     * cells the new mesh will have (the memory check; it may throw).
+     */
     void
     refine(parallel::distributed::Triangulation<dim> &tria,
            const DoFHandler<dim>                     &dof_handler,
            const FiniteElementSpace<dim>             &fe_space,
            const StressModel<dim>                    &stress_model,
-           const TrilinosWrappers::MPI::Vector       &solution) const;
+           const TrilinosWrappers::MPI::Vector       &solution,
+           const std::function<void(double)>         &check_new_mesh) const;
 
     /** The error indicator per active cell (zero on non-owned cells). */
     Vector<float>

@@ -3,6 +3,8 @@
 
 #include <lithostress/solvers/linear_solver.h>
 
+#include <string>
+
 namespace lithostress
 {
   /**
@@ -13,6 +15,20 @@ namespace lithostress
   class DirectSolver : public LinearSolver<dim>
   {
   public:
+    std::string
+    name() const override
+    {
+      return "direct solver";
+    }
+
+    /** Not measured: an allowance for the factor fill-in of a 2-D sparse direct
+     * solver (3-4x the matrix). */
+    double
+    memory_per_dof() const override
+    {
+      return 4000;
+    }
+
     explicit DirectSolver(const std::string &amesos_solver);
 
     SolverReport

@@ -3,8 +3,10 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <lithostress/base/interruption.h>
 #include <lithostress/boundary_conditions/prescribed_displacement.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
@@ -42,6 +44,52 @@ namespace lithostress
      * levels, preconditioner) [bytes], where it can be measured. */
     double memory_bytes = 0;
   };
+
+  /**
+   * Check the norm @p norm of a right-hand side before a solve: a NaN or
+   * infinity (from a load that overflowed) is a ComputationError on all
+   * ranks (the norm is collective), instead of a solve that returns garbage.
+   */
+  void
+  check_right_hand_side(const double norm);
+
+  /**
+   * The iterations @p control counted, or 0 if it never checked a residual
+   * (a zero right-hand side): never deal.II's invalid_unsigned_int, which
+   * prints as 4294967295.
+   */
+  unsigned int
+  iterations_of(const SolverControl &control);
+
+  /**
+   * Let @p solver (a deal.II iterative solver) stop between two iterations
+   * when any rank of @p communicator has received SIGINT or SIGTERM: it
+   * then throws SolverControl::NoConvergence, which the caller turns into
+   * RunInterrupted through rethrow_solver_failure().
+   */
+  template <typename IterativeSolver>
+  void
+  stop_on_signal(IterativeSolver &solver, const MPI_Comm communicator)
+  {
+    solver.connect(
+      [communicator](const unsigned int, const double, const auto &) {
+        return interruption::signal_on_any_rank(communicator) != 0
+                 ? SolverControl::failure
+                 : SolverControl::iterate;
+      });
+  }
+
+  /**
+   * Report a solver's failure truthfully: RunInterrupted if a signal
+   * stopped it (in @p where), else a ComputationError naming @p solver, the
+   * iterations and the relative residual of @p failure, and @p advice.
+   */
+  [[noreturn]] void
+  rethrow_solver_failure(const SolverControl::NoConvergence &failure,
+                         const MPI_Comm                      communicator,
+                         const std::string                  &solver,
+                         const double                        rhs_norm,
+                         const std::string                  &advice);
 
   /** Wall time [s] of the fastest of @p n calls of @p operation, each
    * timed over all ranks of @p communicator (benchmark figures: the minimum
@@ -99,6 +147,18 @@ namespace lithostress
     {
       return true;
     }
+
+    /** The solver's name in messages ("CG with AMG"). */
+    virtual std::string
+    name() const = 0;
+
+    /**
+     * Peak memory per DoF of a run with this solver [bytes], beyond the
+     * fixed footprint per rank: measured on the flexure benchmark
+     * (doc/performance.md), for the memory check before each mesh.
+     */
+    virtual double
+    memory_per_dof() const = 0;
 
     /** Prepare the DoF handler after distribute_dofs() (a geometric
      * multigrid numbers the DoFs of every level). */

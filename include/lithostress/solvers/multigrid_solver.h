@@ -5,6 +5,8 @@
 
 #include <memory>
 
+#include <string>
+
 namespace lithostress
 {
   /**
@@ -26,6 +28,19 @@ namespace lithostress
   class MatrixFreeMultigridSolver : public LinearSolver<dim>
   {
   public:
+    std::string
+    name() const override
+    {
+      return "CG with matrix-free multigrid";
+    }
+
+    /** Peak 355 MiB at 648 k DoFs, of which 160 MB is the empty program. */
+    double
+    memory_per_dof() const override
+    {
+      return 400;
+    }
+
     struct Settings
     {
       double       relative_tolerance = 1e-10;

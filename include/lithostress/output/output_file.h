@@ -1,0 +1,41 @@
+#ifndef lithostress_output_output_file_h
+#define lithostress_output_output_file_h
+
+#include <sstream>
+#include <string>
+
+namespace lithostress
+{
+  /**
+   * A result file written completely or not at all. The text is collected
+   * in memory; commit() checks that every number in it is finite, writes it
+   * under a temporary name in the same directory and renames it to its
+   * name, so that a reader, a later failure or a run stopped by a signal
+   * never sees half a file, and an earlier run's file stays as it was until
+   * the new one is complete. Without commit() nothing is written.
+   */
+  class OutputFile : public std::ostringstream
+  {
+  public:
+    explicit OutputFile(const std::string &file_name);
+
+    /**
+     * Write the file. Throws ComputationError naming the file and the line
+     * if the text has a NaN or infinity in it, or if the file cannot be
+     * written; the old file (if any) is then unchanged. Called on the one
+     * rank that writes: wrap the call in on_all_ranks() so that an error
+     * reaches every rank.
+     */
+    void
+    commit();
+
+  private:
+    std::string file_name;
+  };
+
+  /** Write @p text to @p file_name atomically, as OutputFile::commit(). */
+  void
+  write_file_atomically(const std::string &file_name, const std::string &text);
+} // namespace lithostress
+
+#endif
