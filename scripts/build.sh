@@ -1,13 +1,16 @@
 #!/bin/bash
 # Configure (once) and build lithostress: scripts/build.sh <dir> <Debug|Release>
+# (LITHOSTRESS_SANITIZE=ON in the environment: with ASan + UBSan)
 set -euo pipefail
 dir=${1:-build}
 type=${2:-Release}
 root=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$root/$dir"
 cd "$root/$dir"
-if [ ! -f CMakeCache.txt ] || ! grep -q "CMAKE_BUILD_TYPE:STRING=$type" CMakeCache.txt; then
-  cmake -DCMAKE_BUILD_TYPE="$type" "$root" >/dev/null
+sanitize=${LITHOSTRESS_SANITIZE:-OFF}
+if [ ! -f CMakeCache.txt ] || ! grep -q "CMAKE_BUILD_TYPE:STRING=$type" CMakeCache.txt ||
+   ! grep -q "LITHOSTRESS_SANITIZE:BOOL=$sanitize" CMakeCache.txt; then
+  cmake -DCMAKE_BUILD_TYPE="$type" -DLITHOSTRESS_SANITIZE="$sanitize" "$root" >/dev/null
 fi
 # Build every target (the program and the unit-test programs); progress
 # lines are filtered, a failing build still fails this script (pipefail).

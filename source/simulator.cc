@@ -495,13 +495,17 @@ namespace lithostress
       {
         // Stopped at a safe point: what is written is complete; add the
         // statistics and the timing table so far, and say where it stopped.
-        std::string message = std::string(stop.what()) + " of cycle " +
-                              std::to_string(cycle) + "; ";
-        message += cycle == 0 ? "no cycle was complete"
-                              : "the results of cycles 0 to " +
-                                  std::to_string(cycle - 1) +
-                                  " are complete in " + output_directory;
-        log << '\n' << message << '\n';
+        std::string message =
+          stop.where() + " of cycle " + std::to_string(cycle) + "; ";
+        if (cycle == 0)
+          message += "no cycle was complete";
+        else if (cycle == 1)
+          message +=
+            "the results of cycle 0 are complete in " + output_directory;
+        else
+          message += "the results of cycles 0 to " + std::to_string(cycle - 1) +
+                     " are complete in " + output_directory;
+        log << '\n' << RunInterrupted(stop.signal(), message).what() << '\n';
         write_statistics();
         timer->print_summary();
         log << '\n' << timer_text.str();

@@ -28,6 +28,7 @@ namespace lithostress
   RunInterrupted::RunInterrupted(const int signal, const std::string &where)
       : std::runtime_error("stopped by " + signal_name(signal) + " in " + where)
       , signal_number(signal)
+      , stopped_in(where)
   {
   }
 

@@ -20,6 +20,13 @@ namespace lithostress
   public:
     RunInterrupted(const int signal, const std::string &where);
 
+    /** Where the run stopped (without "stopped by ..."). */
+    const std::string &
+    where() const
+    {
+      return stopped_in;
+    }
+
     /** The signal that stopped the run (SIGINT or SIGTERM). */
     int
     signal() const
@@ -28,7 +35,8 @@ namespace lithostress
     }
 
   private:
-    int signal_number;
+    int         signal_number;
+    std::string stopped_in;
   };
 
   /**

@@ -65,7 +65,9 @@ namespace lithostress
    * Let @p solver (a deal.II iterative solver) stop between two iterations
    * when any rank of @p communicator has received SIGINT or SIGTERM: it
    * then throws SolverControl::NoConvergence, which the caller turns into
-   * RunInterrupted through rethrow_solver_failure().
+   * RunInterrupted through rethrow_solver_failure(). The slot returns
+   * `success` for "no objection": deal.II combines the states of the
+   * SolverControl and the slots, iterating while any says `iterate`.
    */
   template <typename IterativeSolver>
   void
@@ -75,7 +77,7 @@ namespace lithostress
       [communicator](const unsigned int, const double, const auto &) {
         return interruption::signal_on_any_rank(communicator) != 0
                  ? SolverControl::failure
-                 : SolverControl::iterate;
+                 : SolverControl::success;
       });
   }
 
