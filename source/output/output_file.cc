@@ -49,21 +49,25 @@ namespace lithostress
     }
   } // namespace
 
-  OutputFile::OutputFile(const std::string &file_name)
+  OutputFile::OutputFile(const std::string &file_name, const Content content)
       : file_name(file_name)
+      , content(content)
   {
   }
 
   void
   OutputFile::commit()
   {
-    write_file_atomically(file_name, str());
+    write_file_atomically(file_name, str(), content == text);
   }
 
   void
-  write_file_atomically(const std::string &file_name, const std::string &text)
+  write_file_atomically(const std::string &file_name,
+                        const std::string &text,
+                        const bool         check_numbers)
   {
-    if (const unsigned int line = line_with_non_finite_number(text))
+    if (const unsigned int line =
+          check_numbers ? line_with_non_finite_number(text) : 0)
       throw ComputationError("a non-finite number (NaN or infinity) would "
                              "be written to <" +
                              file_name + "> in line " + std::to_string(line) +

@@ -84,17 +84,37 @@ namespace lithostress
     data_out.build_patches(fe_space.mapping(),
                            subdivisions == 0 ? fe_space.degree() : subdivisions,
                            DataOut<dim>::curved_inner_cells);
-    const std::string pvtu = data_out.write_vtu_with_pvtu_record(
-      directory + "/", "solution", cycle, dof_handler.get_communicator(), 3);
-    records.emplace_back(cycle, pvtu);
-    on_all_ranks(dof_handler.get_communicator(), [&]() {
-      if (Utilities::MPI::this_mpi_process(dof_handler.get_communicator()) == 0)
-        {
-          // The record is written after the pieces it lists are complete.
-          OutputFile pvd(directory + "/solution.pvd");
-          DataOutBase::write_pvd_record(pvd, records);
-          pvd.commit();
-        }
+    // Each rank writes its piece, rank 0 the .pvtu listing them and then
+    // the .pvd: every file appears complete (OutputFile), and a record only
+    // once the pieces it lists are there.
+    const MPI_Comm     comm    = dof_handler.get_communicator();
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
+    const std::string  base  = "solution_" + Utilities::int_to_string(cycle, 3);
+    const auto         piece = [&](const unsigned int r) {
+      return base + "." +
+             Utilities::int_to_string(r,
+                                      Utilities::needed_digits(n_ranks - 1)) +
+             ".vtu";
+    };
+    on_all_ranks(comm, [&]() {
+      OutputFile vtu(directory + "/" + piece(my_rank), OutputFile::binary);
+      data_out.write_vtu(vtu);
+      vtu.commit();
+    });
+    on_all_ranks(comm, [&]() {
+      if (my_rank != 0)
+        return;
+      std::vector<std::string> pieces;
+      for (unsigned int r = 0; r < n_ranks; ++r)
+        pieces.push_back(piece(r));
+      OutputFile pvtu(directory + "/" + base + ".pvtu");
+      data_out.write_pvtu_record(pvtu, pieces);
+      pvtu.commit();
+      records.emplace_back(cycle, base + ".pvtu");
+      OutputFile pvd(directory + "/solution.pvd");
+      DataOutBase::write_pvd_record(pvd, records);
+      pvd.commit();
     });
   }
 

@@ -17,7 +17,17 @@ namespace lithostress
   class OutputFile : public std::ostringstream
   {
   public:
-    explicit OutputFile(const std::string &file_name);
+    /** What commit() checks: the numbers of a text file, or nothing in a
+     * file of encoded binary data (a compressed .vtu piece, made from a
+     * solution that was checked finite). */
+    enum Content
+    {
+      text,
+      binary
+    };
+
+    explicit OutputFile(const std::string &file_name,
+                        const Content      content = text);
 
     /**
      * Write the file. Throws ComputationError naming the file and the line
@@ -31,11 +41,15 @@ namespace lithostress
 
   private:
     std::string file_name;
+    Content     content;
   };
 
-  /** Write @p text to @p file_name atomically, as OutputFile::commit(). */
+  /** Write @p text to @p file_name atomically, as OutputFile::commit();
+   * @p check_numbers: fail on a NaN or infinity in it. */
   void
-  write_file_atomically(const std::string &file_name, const std::string &text);
+  write_file_atomically(const std::string &file_name,
+                        const std::string &text,
+                        const bool         check_numbers = true);
 } // namespace lithostress
 
 #endif
