@@ -548,6 +548,7 @@ namespace lithostress
     log << "lithostress: " << Utilities::MPI::n_mpi_processes(communicator)
         << " MPI rank(s), output in " << output_directory << "/" << std::endl;
     log << huge_pages_description() << '\n';
+    log << memory_budget.description() << '\n';
     log << "Loads:" << (loads.loads().empty() ? " none" : "") << '\n';
     for (const auto &load : loads.loads())
       log << "  " << load->description() << '\n';

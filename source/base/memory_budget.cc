@@ -24,6 +24,23 @@ namespace lithostress
     }
   } // namespace
 
+  /** This process's resident size (VmRSS) [bytes], or 0. */
+  double
+  resident_size()
+  {
+    std::ifstream status("/proc/self/status");
+    std::string   key, unit;
+    double        value;
+    std::string   line;
+    while (std::getline(status, line))
+      {
+        std::istringstream in(line);
+        if (in >> key >> value >> unit && key == "VmRSS:")
+          return value * 1024;
+      }
+    return 0;
+  }
+
   double
   available_memory_on_node()
   {
@@ -57,7 +74,7 @@ namespace lithostress
   memory_text(const double bytes)
   {
     std::ostringstream out;
-    out << std::setprecision(3);
+    out << std::fixed << std::setprecision(bytes >= 1e9 ? 2 : 1);
     if (bytes >= 1e12)
       out << bytes / 1e12 << " TB";
     else if (bytes >= 1e9)
@@ -88,6 +105,7 @@ namespace lithostress
                                  const MPI_Comm    communicator)
   {
     this->communicator = communicator;
+    bytes_per_rank     = Utilities::MPI::max(resident_size(), communicator);
     prm.enter_subsection("Resources");
     limit_text = Utilities::trim(prm.get("Memory limit"));
     prm.leave_subsection();
@@ -123,10 +141,23 @@ namespace lithostress
     limit = value * units.at(unit);
   }
 
+  std::string
+  MemoryBudget::description() const
+  {
+    std::ostringstream size;
+    size << std::fixed << std::setprecision(1) << bytes_per_rank / 1e6;
+    return "Memory: " + size.str() + " MB" +
+           " per rank when the model was read; limit " +
+           (limit == 0 ? "auto, " + memory_text(available_memory_on_node()) +
+                           " available on this node"
+                       : memory_text(limit) + " for the run") +
+           " (Resources/Memory limit).";
+  }
+
   double
   MemoryBudget::estimate(const double       dofs,
                          const double       bytes_per_dof,
-                         const unsigned int ranks)
+                         const unsigned int ranks) const
   {
     return ranks * bytes_per_rank + dofs * bytes_per_dof;
   }

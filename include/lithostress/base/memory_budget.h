@@ -15,7 +15,8 @@ namespace lithostress
    * it: before the first mesh is made and before each refinement, the
    * cells and DoFs of the next mesh are estimated and, with the measured
    * bytes per DoF of the chosen solver (doc/performance.md) and the
-   * footprint of an empty program per rank, turned into memory. A mesh that
+   * program's own size per rank when the model was read (the libraries:
+   * about 150 MB in Release, 360 MB in Debug), turned into memory. A mesh that
    * would not fit stops the run with the estimate, the limit and the entry
    * to change, instead of refining into swap.
    *
@@ -51,17 +52,20 @@ namespace lithostress
           const std::string &entries) const;
 
     /** Memory of a run with @p dofs DoFs on @p ranks ranks [bytes]. */
-    static double
+    double
     estimate(const double       dofs,
              const double       bytes_per_dof,
-             const unsigned int ranks);
+             const unsigned int ranks) const;
 
-    /** The resident memory of an empty deal.II/Trilinos program per rank
-     * (measured, doc/performance.md) [bytes]. */
-    static constexpr double bytes_per_rank = 160e6;
+    /** A line for the log: the size per rank at start and the limit. */
+    std::string
+    description() const;
 
   private:
     MPI_Comm communicator = MPI_COMM_WORLD;
+    /** Resident size of the largest rank when the model was read
+     * (VmRSS) [bytes]. */
+    double bytes_per_rank = 0;
     /** Limit for the whole run [bytes] if given; 0 = auto. */
     double      limit = 0;
     std::string limit_text;
@@ -72,7 +76,7 @@ namespace lithostress
   double
   available_memory_on_node();
 
-  /** @p bytes as "1.23 GB". */
+  /** @p bytes as "354.2 MB" or "1.23 GB". */
   std::string
   memory_text(const double bytes);
 } // namespace lithostress
