@@ -1,3 +1,4 @@
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>
@@ -46,27 +47,12 @@ namespace lithostress
     const unsigned int n_modes   = per_field * fe_space.n_fields();
     const auto        &tria      = dof_handler.get_triangulation();
 
-    // Centre and size of the body (the coarse mesh's bounding box).
-    Point<dim> lo, hi;
-    for (unsigned int d = 0; d < dim; ++d)
-      lo[d] = std::numeric_limits<double>::max(),
-      hi[d] = -std::numeric_limits<double>::max();
-    for (const auto &cell : tria.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              lo[d] = std::min(lo[d], cell->vertex(v)[d]);
-              hi[d] = std::max(hi[d], cell->vertex(v)[d]);
-            }
-    Point<dim> centre;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lo[d]     = Utilities::MPI::min(lo[d], comm);
-        hi[d]     = Utilities::MPI::max(hi[d], comm);
-        centre[d] = 0.5 * (lo[d] + hi[d]);
-      }
-    const double size = lo.distance(hi);
+    // Centre and size of the body: the bounding box of the coarse mesh,
+    // whose vertices every rank holds.
+    const BoundingBox<dim> box(tria.get_vertices());
+    const Point<dim>       centre = box.center();
+    const double           size   = box.get_boundary_points().first.distance(
+      box.get_boundary_points().second);
 
     // The modes at every DoF of owned and ghost cells: mode k of field f
     // is translation x, translation y, rotation (3 f + 0, 1, 2).
@@ -223,6 +209,10 @@ namespace lithostress
           Point<dim>   p = centre;
           p[0] -= c[1] / w;
           p[1] += c[0] / w;
+          // Round-off relative to the body's size is not a coordinate.
+          for (unsigned int d = 0; d < dim; ++d)
+            if (std::abs(p[d]) < 1e-9 * size)
+              p[d] = 0;
           return p;
         };
         if (free.size() == per_field)
