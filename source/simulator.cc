@@ -670,11 +670,13 @@ namespace lithostress
         solution);
     }
     if (thin_plate.enabled)
-      thin_plate.report(thin_plate_profile,
-                        log,
-                        Utilities::MPI::this_mpi_process(communicator) == 0
-                          ? output_directory + "/thin_plate_comparison.csv"
-                          : std::string());
+      on_all_ranks(communicator, [&]() {
+        thin_plate.report(thin_plate_profile,
+                          log,
+                          Utilities::MPI::this_mpi_process(communicator) == 0
+                            ? output_directory + "/thin_plate_comparison.csv"
+                            : std::string());
+      });
     if (figures.enabled)
       {
         TimerOutput::Scope t(*timer, "profiles and figures");
