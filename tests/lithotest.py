@@ -62,6 +62,23 @@ def read_csv(path):
         return [{k: value(v) for k, v in row.items()} for row in csv.DictReader(f)]
 
 
+def read_prm(path):
+    """A .prm file (e.g. the parameters.prm a run writes) as
+    {"Section/Subsection/Entry": value string}."""
+    entries, sections = {}, []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#", 1)[0].strip()
+            if line.startswith("subsection "):
+                sections.append(line[len("subsection "):].strip())
+            elif line == "end":
+                sections.pop()
+            elif line.startswith("set "):
+                key, value = line[len("set "):].split("=", 1)
+                entries["/".join(sections + [key.strip()])] = value.strip()
+    return entries
+
+
 def forces(output):
     """force_balance.csv of <output> as {(kind, name): (F_x, F_y)}."""
     return {(r["kind"], r["name"]): (r["F_x"], r["F_y"])

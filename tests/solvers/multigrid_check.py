@@ -3,11 +3,7 @@ verifications 2 and 3).
 
 2. The verification problems of the elastic core — lithostatic column,
    cantilever, Lame cylinder, adaptive L-shaped domain — give the same
-   errors and rates with both solvers. Both stop at ||r|| <= tol ||f||, so
-   their solutions differ by at most ~tol * cond(K) relative; with the
-   tests' tolerances (1e-12) that is far below the discretization errors
-   compared here, which are >= 1e-8 relative: the errors must agree to
-   1e-3 relative and the fitted rates to 0.01.
+   errors and rates with both solvers.
 3. Multigrid iteration counts stay within +-2 of a central value (their
    range is at most 4) over all cycles after the first (the first cycle is
    the coarse mesh or close to it: a direct solve or a two-level cycle), on
@@ -15,19 +11,63 @@ verifications 2 and 3).
    adaptively refined L-shaped domain: the preconditioner is
    h-independent.
 The coarse level solved by CG + AMG to 1e-8 (Multigrid coarse solver = AMG)
-instead of KLU changes each V-cycle by ~1e-8 relative: the same errors (to
-1e-3, as above) and the same iteration counts to +-1 (a count can flip when
-the residual lands at the tolerance) on the cantilever and the adaptive
-L-shaped domain; on those small coarse meshes ML's hierarchy is a single
-direct solve, so the flexure plate with a 250 x 5 coarse mesh (10 k coarse
-DoFs: a real AMG hierarchy) is compared too, by its point values (equal to
-1e-6 relative: both solves stop at 1e-12) and its iteration counts."""
-import sys, os, re
+instead of KLU: the same errors and the same iteration counts to +-1 (a
+count can flip when the residual lands at the tolerance) on the cantilever
+and the adaptive L-shaped domain; on those small coarse meshes ML's
+hierarchy is a single direct solve, so the flexure plate with a 250 x 5
+coarse mesh (10 k coarse DoFs: a real AMG hierarchy) is compared too, by
+its point values and its iteration counts.
+
+Tolerances. Every solve here stops at ||r|| <= 1e-12 ||f||, so two solvers'
+solutions u1, u2 differ by d = u1 - u2 with ||d|| / ||u|| of the order of
+1e-12 times a condition-dependent factor; an error e = ||u - u_h|| then
+moves by at most ||d||, relatively by ||d|| / e, which is large where the
+discretisation error is small:
+- L2(u) is not orthogonal to d: measured relative differences 2.4e-5
+  (cantilever, at 8.5 k DoFs where rel. L2(u) = 3.7e-7: ||d||/||u|| =
+  8.8e-12), 2.5e-8 (Lame), 9.1e-10 (L-shaped, whose errors are large);
+- the energy error is Galerkin-orthogonal to d (d is in the finite element
+  space): e^2 changes by ||d||_E^2 only, second order, so what remains is
+  the round-off of computing e from a solution ~1/e_rel times larger,
+  ~1e-16 / e_rel: measured 6.0e-12 (cantilever), 4.7e-12 (Lame), 1.8e-13
+  (L-shaped);
+- L2(stress): measured 2.4e-11, 4.6e-12, 4.7e-12.
+The bounds (TOL_MG_AMG) are 4-10x these, per problem and column. The
+fitted rates then differ by at most tol * sum|x - mean x| / sum (x -
+mean x)^2 (x = log N; each log e moves by at most tol): that bound is
+computed, not typed in (measured rate differences 1.5e-6 and below).
+The AMG coarse solve against the direct one: on the small coarse meshes of
+the cantilever and L-shaped domain ML's hierarchy is one direct solve, the
+two agree to round-off (measured 4.3e-14 and 0): bound 5e-13. The flexure
+plate's point values with a real AMG hierarchy on the coarse level (each
+V-cycle's coarse solve to 1e-8, the outer CG to 1e-12) differ by 4.9e-10
+of the field's largest value: bound 2e-9. Global coarsening against local
+smoothing (both to 1e-12): cantilever 0 on 1 rank (on a uniformly refined
+mesh the two hierarchies are the same) and 1.0e-10 on 2 ranks, L-shaped
+1.1e-11: bounds 5e-10 and 5e-11."""
+
+import math, sys, os, re
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from lithotest import *
 
 ROOT = os.path.dirname(SOURCE)
 MG = "Solver/Type=matrix-free multigrid"
+# Relative differences of the errors allowed, per problem and column (see
+# above: 4-10x the measured ones).
+TOL_MG_AMG = {"cantilever": {"L2(u)": 1e-4, "energy": 5e-11, "L2(stress)": 1e-10},
+              "lame_cylinder": {"L2(u)": 1e-7, "energy": 5e-11, "L2(stress)": 5e-11},
+              "l_shaped": {"L2(u)": 5e-9, "energy": 1e-12, "L2(stress)": 5e-11}}
+TOL_COARSE_AMG = {"cantilever": 5e-13, "l_shaped": 5e-13}
+TOL_FLEXURE_COARSE_AMG = 2e-9
+TOL_GLOBAL_COARSENING = {"cantilever": 5e-10, "l_shaped": 5e-11}
+
+
+def rate_bound(rows, first, tol):
+    """The largest change of the least-squares rate over rows[first:] when
+    each log(error) moves by at most tol."""
+    xs = [math.log(r["dofs"]) for r in rows[first:]]
+    mean = sum(xs) / len(xs)
+    return tol * sum(abs(x - mean) for x in xs) / sum((x - mean) ** 2 for x in xs)
 AMG = "Solver/Type=AMG"
 
 
@@ -73,13 +113,16 @@ for prm, columns, sets in problems:
           "%s: same meshes with both solvers (%d cycles, up to %d DoFs)"
           % (name, len(rows_mg), rows_mg[-1]["dofs"]))
     for c in columns:
+        tol = TOL_MG_AMG[name][c]
         worst = max(abs(a[c] - b[c]) / b[c] for a, b in zip(rows_mg, rows_amg))
-        check(worst <= 1e-3, "%s: %s equal with multigrid and AMG (max relative difference %.1e)"
-              % (name, c, worst))
+        check(worst <= tol, "%s: %s equal with multigrid and AMG (max relative difference %.1e, allowed %.0e)"
+              % (name, c, worst, tol))
         if len(rows_mg) >= 3:
             first = 2 if name == "l_shaped" else 1
             rm, ra = slope(rows_mg, c, first), slope(rows_amg, c, first)
-            check(abs(rm - ra) <= 0.01, "%s: rate of %s %.3f (multigrid) vs %.3f (AMG)" % (name, c, rm, ra))
+            bound = rate_bound(rows_mg, first, tol)
+            check(abs(rm - ra) <= bound, "%s: rate of %s %.6f (multigrid) vs %.6f (AMG): difference %.1e "
+                  "(allowed %.1e)" % (name, c, rm, ra, abs(rm - ra), bound))
 
 # The AMG coarse solve against the direct one.
 for prm in ("cantilever/cantilever.prm", "l_shaped/l_shaped_adaptive.prm"):
@@ -91,9 +134,9 @@ for prm in ("cantilever/cantilever.prm", "l_shaped/l_shaped_adaptive.prm"):
     rows, rows_direct = table(out), table(os.path.abspath("output_mg_" + name))
     worst = max(abs(a[c] - b[c]) / b[c] for a, b in zip(rows, rows_direct)
                 for c in ("L2(u)", "energy", "L2(stress)"))
-    check(len(rows) == len(rows_direct) and worst <= 1e-3,
-          "%s: errors with the AMG coarse solve equal the direct one's (max relative difference %.1e)"
-          % (name, worst))
+    check(len(rows) == len(rows_direct) and worst <= TOL_COARSE_AMG[name],
+          "%s: errors with the AMG coarse solve equal the direct one's (max relative difference %.1e, "
+          "allowed %.0e)" % (name, worst, TOL_COARSE_AMG[name]))
     its = [n for _, _, n in iterations(out)]
     its_direct = [n for _, _, n in iterations(os.path.abspath("output_mg_" + name))]
     check(len(its) == len(its_direct) and all(abs(a - b) <= 1 for a, b in zip(its, its_direct)),
@@ -112,9 +155,9 @@ rows, rows_direct = table(outs["AMG"]), table(outs["direct"])
 columns = [c for c in rows[0] if c.startswith(("u_", "s_"))]
 worst = max(abs(a[c] - b[c]) / max(abs(r[c]) for r in rows_direct)
             for a, b in zip(rows, rows_direct) for c in columns)
-check(len(rows) == len(rows_direct) and worst <= 1e-6,
+check(len(rows) == len(rows_direct) and worst <= TOL_FLEXURE_COARSE_AMG,
       "flexure (%d coarse cells): point values with the AMG coarse solve equal the direct one's "
-      "(max relative difference %.1e)" % (rows[0]["cells"], worst))
+      "(max relative difference %.1e, allowed %.0e)" % (rows[0]["cells"], worst, TOL_FLEXURE_COARSE_AMG))
 its = [n for _, _, n in iterations(outs["AMG"])]
 its_direct = [n for _, _, n in iterations(outs["direct"])]
 check(all(abs(a - b) <= 1 for a, b in zip(its, its_direct)),
@@ -139,9 +182,10 @@ for name, prm, sets in (("cantilever", "cantilever/cantilever.prm", []),
         worst = max(abs(a[c] - b[c]) / b[c] for a, b in zip(rows, rows_ls)
                     for c in ("L2(u)", "energy", "L2(stress)"))
         check(len(rows) <= len(rows_ls) and all(a["dofs"] == b["dofs"] for a, b in zip(rows, rows_ls))
-              and worst <= 1e-3,
+              and worst <= TOL_GLOBAL_COARSENING[name],
               "%s, %d rank(s): errors with global coarsening equal local smoothing's over %d cycles "
-              "(max relative difference %.1e)" % (name, ranks, len(rows), worst))
+              "(max relative difference %.1e, allowed %.0e)"
+              % (name, ranks, len(rows), worst, TOL_GLOBAL_COARSENING[name]))
         counts = [n for _, _, n in iterations(out)]
         check(max(counts[1:]) - min(counts[1:]) <= 4,
               "%s, %d rank(s): global-coarsening iterations %s (local smoothing %s) stay within +-2"
