@@ -1,0 +1,115 @@
+#ifndef lithostress_time_integration_creep_strain_h
+#define lithostress_time_integration_creep_strain_h
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/distributed/solution_transfer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * The creep strain of Maxwell materials (SPEC §3.3, thesis §3.9) as a
+   * history field: the 3-D deviatoric creep strain — components xx, yy, xy
+   * and zz in 2-D, where plane strain keeps ε_zz = 0 but creep in z does
+   * not vanish — stored as a discontinuous finite-element field whose nodes
+   * are the Gauss points of the cell quadrature (FE_DGQArbitraryNodes on
+   * QGauss(n)). So:
+   * - a node's value is the history at that quadrature point: the time
+   *   update at the quadrature points of assembly is exact, no projection;
+   * - at any other point (output, point values, profiles) the history is
+   *   the cell's polynomial through its Gauss-point values;
+   * - mesh changes and checkpoints are deal.II's SolutionTransfer of a DG
+   *   field: refinement evaluates the parent's polynomial at the children's
+   *   nodes, coarsening projects the children's polynomials onto the parent
+   *   (L2). Both are exact for a field that is a polynomial of degree n − 1
+   *   in each coordinate; otherwise the error is that of the projection,
+   *   O(h^n). This sidesteps 9.4.1's ContinuousQuadratureDataTransfer, which
+   *   cannot coarsen (DEALII-9.4.1-NOTES.md).
+   */
+  template <int dim>
+  class CreepStrain
+  {
+  public:
+    /** xx, yy, xy and zz in 2-D; the six of the symmetric tensor in 3-D. */
+    static constexpr unsigned int n_components = dim == 2 ? 4 : 6;
+
+    using VectorType = LinearAlgebra::distributed::Vector<double>;
+
+    /** A history field on @p triangulation with @p n_points_1d Gauss points
+     * per direction (that of the assembly: p + 1 for Q_p). */
+    CreepStrain(const parallel::distributed::Triangulation<dim> &triangulation,
+                const unsigned int                               n_points_1d);
+
+    /** Number the nodes of the current mesh and set the field to zero. */
+    void
+    setup();
+
+    /** The quadrature whose points are the nodes of a cell. */
+    const Quadrature<dim> &
+    quadrature() const
+    {
+      return nodes;
+    }
+
+    /** The values at the nodes (quadrature points) of an owned @p cell:
+     * @p values[q][c] for node q and component c. */
+    void
+    get(const typename Triangulation<dim>::active_cell_iterator &cell,
+        std::vector<Vector<double>>                             &values) const;
+
+    /** Set the values at the nodes of an owned @p cell. */
+    void
+    set(const typename Triangulation<dim>::active_cell_iterator &cell,
+        const std::vector<Vector<double>>                       &values);
+
+    /** Exchange ghost values after set() (collective); needed before the
+     * field is evaluated on ghost cells or transferred. */
+    void
+    update_ghost_values();
+
+    /** Before the triangulation is refined or coarsened (collective). */
+    void
+    prepare_for_mesh_change();
+
+    /** After it: number the new nodes and transfer the field (collective). */
+    void
+    finish_mesh_change();
+
+    /** The field's DoFs and values (ghosted), for evaluation at arbitrary
+     * points with FEValues. */
+    const DoFHandler<dim> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+
+    const VectorType &
+    values() const
+    {
+      return field;
+    }
+
+  private:
+    typename DoFHandler<dim>::active_cell_iterator
+    dof_cell(
+      const typename Triangulation<dim>::active_cell_iterator &cell) const;
+
+    const QGauss<dim>   nodes;
+    const FESystem<dim> fe;
+    DoFHandler<dim>     dofs;
+    VectorType          field;
+    std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
+      transfer;
+  };
+} // namespace lithostress
+
+#endif

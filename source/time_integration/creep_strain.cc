@@ -1,0 +1,108 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_dgq.h>
+
+#include <lithostress/time_integration/creep_strain.h>
+
+namespace lithostress
+{
+  template <int dim>
+  CreepStrain<dim>::CreepStrain(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const unsigned int                               n_points_1d)
+      : nodes(n_points_1d)
+      , fe(FE_DGQArbitraryNodes<dim>(QGauss<1>(n_points_1d)), n_components)
+      , dofs(triangulation)
+  {
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::setup()
+  {
+    dofs.distribute_dofs(fe);
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    field.reinit(dofs.locally_owned_dofs(),
+                 relevant,
+                 dofs.get_triangulation().get_communicator());
+  }
+
+  template <int dim>
+  typename DoFHandler<dim>::active_cell_iterator
+  CreepStrain<dim>::dof_cell(
+    const typename Triangulation<dim>::active_cell_iterator &cell) const
+  {
+    return typename DoFHandler<dim>::active_cell_iterator(
+      &dofs.get_triangulation(), cell->level(), cell->index(), &dofs);
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::get(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    std::vector<Vector<double>>                             &values) const
+  {
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    dof_cell(cell)->get_dof_indices(indices);
+    values.resize(nodes.size(), Vector<double>(n_components));
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      {
+        const auto c_q                = fe.system_to_component_index(i);
+        values[c_q.second][c_q.first] = field(indices[i]);
+      }
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::set(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    const std::vector<Vector<double>>                       &values)
+  {
+    AssertDimension(values.size(), nodes.size());
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    dof_cell(cell)->get_dof_indices(indices);
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      {
+        const auto c_q    = fe.system_to_component_index(i);
+        field(indices[i]) = values[c_q.second][c_q.first];
+      }
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::update_ghost_values()
+  {
+    field.update_ghost_values();
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::prepare_for_mesh_change()
+  {
+    field.update_ghost_values();
+    transfer = std::make_unique<
+      parallel::distributed::SolutionTransfer<dim, VectorType>>(dofs);
+    transfer->prepare_for_coarsening_and_refinement(field);
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::finish_mesh_change()
+  {
+    Assert(transfer, ExcMessage("prepare_for_mesh_change() was not called"));
+    dofs.distribute_dofs(fe);
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    VectorType transferred(dofs.locally_owned_dofs(),
+                           dofs.get_triangulation().get_communicator());
+    transfer->interpolate(transferred);
+    transfer.reset();
+    field.reinit(dofs.locally_owned_dofs(),
+                 relevant,
+                 dofs.get_triangulation().get_communicator());
+    field.copy_locally_owned_data_from(transferred);
+    field.update_ghost_values();
+  }
+
+  template class CreepStrain<2>;
+} // namespace lithostress
