@@ -331,6 +331,9 @@ namespace lithostress
     statistics.setup_phases.clear();
     const auto phase_done = [&](const std::string &name) {
       statistics.setup_phases.emplace_back(name, part.wall_time());
+      // The set-up is the longest phase without CG iterations: a safe
+      // point after each of its parts.
+      stop_if_requested("set-up (" + name + ")");
       part.restart();
     };
     dof_handler.distribute_dofs(fe_space->fe_collection());
