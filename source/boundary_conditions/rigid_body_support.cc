@@ -54,8 +54,8 @@ namespace lithostress
     const double           size   = box.get_boundary_points().first.distance(
       box.get_boundary_points().second);
 
-    // The modes at every DoF of owned and ghost cells: mode k of field f
-    // is translation x, translation y, rotation (3 f + 0, 1, 2).
+    // The modes: mode k of field f is translation x, translation y,
+    // rotation (3 f + 0, 1, 2) ...
     const auto mode_value = [&](const unsigned int field,
                                 const unsigned int d,
                                 const Point<dim>  &x,
@@ -67,7 +67,18 @@ namespace lithostress
         return m == d ? 1.0 : 0.0;
       return (d == 0 ? -(x[1] - centre[1]) : (x[0] - centre[0])) / size;
     };
+    // ... at the DoFs the owned constraint lines name (the boundary's, not
+    // the whole mesh's: Gmsh meshes can have tens of thousands of coarse
+    // cells).
+    const IndexSet &owned = dof_handler.locally_owned_dofs();
     std::map<types::global_dof_index, Vector<double>> modes;
+    for (const auto &line : constraints.get_lines())
+      if (owned.is_element(line.index))
+        {
+          modes.emplace(line.index, Vector<double>());
+          for (const auto &entry : line.entries)
+            modes.emplace(entry.first, Vector<double>());
+        }
     {
       const Quadrature<dim> support(fe_space.unit_support_points());
       const FE_Q<dim>       scalar(fe_space.degree());
@@ -79,28 +90,37 @@ namespace lithostress
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (!cell->is_artificial())
           {
-            values.reinit(
-              static_cast<typename Triangulation<dim>::cell_iterator>(cell));
             const auto &fe = cell->get_fe();
             dofs.resize(fe.n_dofs_per_cell());
             cell->get_dof_indices(dofs);
+            bool needed = false;
+            for (const types::global_dof_index i : dofs)
+              {
+                const auto m = modes.find(i);
+                needed = needed || (m != modes.end() && m->second.size() == 0);
+              }
+            if (!needed)
+              continue;
+            values.reinit(
+              static_cast<typename Triangulation<dim>::cell_iterator>(cell));
             for (unsigned int i = 0; i < dofs.size(); ++i)
               {
+                const auto m = modes.find(dofs[i]);
+                if (m == modes.end() || m->second.size() != 0)
+                  continue;
                 const auto         ci    = fe.system_to_component_index(i);
                 const unsigned int field = ci.first / dim;
                 const unsigned int d     = ci.first % dim;
-                Vector<double>     r(n_modes);
+                m->second.reinit(n_modes);
                 for (unsigned int k = 0; k < n_modes; ++k)
-                  r[k] =
+                  m->second[k] =
                     mode_value(field, d, values.quadrature_point(ci.second), k);
-                modes[dofs[i]] = r;
               }
           }
     }
 
     // G from the constraint lines of owned DoFs.
     FullMatrix<double> G(n_modes, n_modes);
-    const IndexSet    &owned = dof_handler.locally_owned_dofs();
     Vector<double>     residual(n_modes);
     for (const auto &line : constraints.get_lines())
       if (owned.is_element(line.index))
