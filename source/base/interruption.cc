@@ -10,9 +10,17 @@ namespace lithostress
   {
     volatile std::sig_atomic_t pending_signal = 0;
 
+    /** Record the signal; a second one while the first is pending ends the
+     * program at once (the default action), for a phase that would take
+     * too long to reach its next safe point. */
     extern "C" void
     record_signal(int signal)
     {
+      if (pending_signal != 0)
+        {
+          std::signal(signal, SIG_DFL);
+          std::raise(signal);
+        }
       pending_signal = signal;
     }
 
@@ -45,12 +53,6 @@ namespace lithostress
       action.sa_flags = SA_RESTART;
       sigaction(SIGINT, &action, nullptr);
       sigaction(SIGTERM, &action, nullptr);
-    }
-
-    int
-    received_signal()
-    {
-      return pending_signal;
     }
 
     int

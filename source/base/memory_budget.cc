@@ -22,24 +22,24 @@ namespace lithostress
         return value;
       return -1;
     }
-  } // namespace
 
-  /** This process's resident size (VmRSS) [bytes], or 0. */
-  double
-  resident_size()
-  {
-    std::ifstream status("/proc/self/status");
-    std::string   key, unit;
-    double        value;
-    std::string   line;
-    while (std::getline(status, line))
-      {
-        std::istringstream in(line);
-        if (in >> key >> value >> unit && key == "VmRSS:")
-          return value * 1024;
-      }
-    return 0;
-  }
+    /** This process's resident size (VmRSS) [bytes], or 0. */
+    double
+    resident_size()
+    {
+      std::ifstream status("/proc/self/status");
+      std::string   key, unit;
+      double        value;
+      std::string   line;
+      while (std::getline(status, line))
+        {
+          std::istringstream in(line);
+          if (in >> key >> value >> unit && key == "VmRSS:")
+            return value * 1024;
+        }
+      return 0;
+    }
+  } // namespace
 
   double
   available_memory_on_node()

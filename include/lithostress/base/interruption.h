@@ -42,6 +42,7 @@ namespace lithostress
   /**
    * Graceful stop on SIGINT and SIGTERM: the signal handler only records the
    * signal; the run asks at safe points whether any rank has received one.
+   * A second signal before the run has stopped ends it at once.
    * Ranks receive a signal at slightly different moments, so the question
    * is collective, and all ranks stop at the same point.
    */
@@ -50,10 +51,6 @@ namespace lithostress
     /** Install the handlers for SIGINT and SIGTERM (once, in main). */
     void
     install_handlers();
-
-    /** The signal this rank has received, or 0 (local, no communication). */
-    int
-    received_signal();
 
     /** Collective: the signal received by any rank of @p communicator, or
      * 0. */
