@@ -21,6 +21,22 @@ PRM = os.path.join(os.path.dirname(SOURCE), "prm", "flexure.prm")
 LATEST_EXIT_S = 20
 
 
+def children_of(pid):
+    """The process ids whose parent is @pid (from /proc: no procps needed)."""
+    result = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit():
+            try:
+                with open("/proc/%s/stat" % entry) as f:
+                    # pid (comm) state ppid ...: comm may contain blanks.
+                    fields = f.read().rsplit(")", 1)[1].split()
+                if int(fields[1]) == pid:
+                    result.append(entry)
+            except (OSError, IndexError, ValueError):
+                pass
+    return result
+
+
 def complete_files(out, label):
     names = sorted(os.listdir(out))
     check(not any(".part-" in n for n in names), "%s: no temporary files left (%s)" % (label, ", ".join(names)))
@@ -75,7 +91,7 @@ for ranks, sig in ((1, signal.SIGTERM), (2, signal.SIGTERM), (1, signal.SIGINT))
     else:
         # The ranks themselves, as a batch system's cancel does (mpirun
         # would kill them one second after forwarding a signal).
-        children = subprocess.run(["pgrep", "-P", str(process.pid)], capture_output=True, text=True).stdout.split()
+        children = children_of(process.pid)
         check(len(children) == ranks, "%s: %d rank processes found" % (label, len(children)))
         for pid in children:
             os.kill(int(pid), sig)
