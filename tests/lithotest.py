@@ -79,6 +79,24 @@ def read_prm(path):
     return entries
 
 
+def solve_dense(M, rhs):
+    """The solution of the small dense system M x = rhs (Gaussian
+    elimination with partial pivoting)."""
+    n = len(rhs)
+    A = [list(map(float, row)) + [float(rhs[i])] for i, row in enumerate(M)]
+    for k in range(n):
+        piv = max(range(k, n), key=lambda r: abs(A[r][k]))
+        A[k], A[piv] = A[piv], A[k]
+        for r in range(k + 1, n):
+            m = A[r][k] / A[k][k]
+            for j in range(k, n + 1):
+                A[r][j] -= m * A[k][j]
+    x = [0.0] * n
+    for k in reversed(range(n)):
+        x[k] = (A[k][n] - sum(A[k][j] * x[j] for j in range(k + 1, n))) / A[k][k]
+    return x
+
+
 def forces(output):
     """force_balance.csv of <output> as {(kind, name): (F_x, F_y)}."""
     return {(r["kind"], r["name"]): (r["F_x"], r["F_y"])

@@ -15,6 +15,11 @@ Measured: plane strain beam -1.32141, Q2 -1.34115 (+1.49 %), P2 triangles
 -1.30180 / -1.30180 / -1.30144 (-1.5 %); plane stress beam -1.50588, Q2
 -1.54861 (+2.84 %), P2 -1.52596 (+1.33 %)."""
 import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from lithotest import solve_dense  # noqa: E402
 
 P, L, C, E, NU = 5e4, 10.0, 1.25, 0.85e7, 0.35
 NODES = [(1.25 * i, y) for y in (-C, 0.0, C) for i in range(9)]
@@ -92,18 +97,7 @@ def tip_deflection(elements, shape, rule, strain):
             f[2 * node(0, j) + 1] += weight * C * value * (-P * (C * C - y * y) / (2 * inertia))
     fixed = {2 * node(8, j) + d for j in range(3) for d in range(2)}
     free = [i for i in range(n) if i not in fixed]
-    A = [[K[i][j] for j in free] + [f[i]] for i in free]
-    m = len(free)
-    for k in range(m):
-        pivot = max(range(k, m), key=lambda r: abs(A[r][k]))
-        A[k], A[pivot] = A[pivot], A[k]
-        for r in range(k + 1, m):
-            factor = A[r][k] / A[k][k]
-            for c in range(k, m + 1):
-                A[r][c] -= factor * A[k][c]
-    u = [0.0] * m
-    for k in reversed(range(m)):
-        u[k] = (A[k][m] - sum(A[k][c] * u[c] for c in range(k + 1, m))) / A[k][k]
+    u = solve_dense([[K[i][j] for j in free] for i in free], [f[i] for i in free])
     return u[free.index(2 * node(0, 1) + 1)]
 
 

@@ -29,23 +29,6 @@ def moduli(E, nu):
     return E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
 
 
-def solve(M, rhs):
-    """Gaussian elimination with partial pivoting."""
-    n = len(rhs)
-    A = [row[:] + [rhs[i]] for i, row in enumerate(M)]
-    for k in range(n):
-        piv = max(range(k, n), key=lambda r: abs(A[r][k]))
-        A[k], A[piv] = A[piv], A[k]
-        for r in range(k + 1, n):
-            m = A[r][k] / A[k][k]
-            for j in range(k, n + 1):
-                A[r][j] -= m * A[k][j]
-    x = [0.0] * n
-    for k in reversed(range(n)):
-        x[k] = (A[k][n] - sum(A[k][j] * x[j] for j in range(k + 1, n))) / A[k][k]
-    return x
-
-
 def constants(text):
     """'a=1, b=2' as {"a": 1.0, "b": 2.0}."""
     return {k.strip(): float(v) for k, v in (c.split("=") for c in text.split(",") if c.strip())}
@@ -171,7 +154,7 @@ check(abs(t_shell - SHELL_T) < 1e-12 and nus == [0.3333, 0.3015] and youngs == [
       "composite cylinder: the thesis's body and shell (t = %.6f)" % t_shell)
 srr_row = lambda layer, r: [2 * sum(layers[layer]), -2 * layers[layer][1] / (r * r)]
 (l0, m0), (l1, m1) = layers
-A0, B0, A1, B1 = solve([srr_row(0, A_IN) + [0, 0],
+A0, B0, A1, B1 = solve_dense([srr_row(0, A_IN) + [0, 0],
                         [B_OUT, 1 / B_OUT, -B_OUT, -1 / B_OUT],
                         srr_row(0, B_OUT) + [-v for v in srr_row(1, B_OUT)],
                         [0, 0] + srr_row(1, B_OUT + t_shell)],

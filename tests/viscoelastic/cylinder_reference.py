@@ -74,7 +74,12 @@ nu = 1/3 exactly (then tau = 1); with nu = 0.3333 the slow rate is 0.35273
 Standard library only.  Run the file for the self-checks and the tables.
 """
 import math
+import os
+import sys
 from functools import lru_cache
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from lithotest import solve_dense  # noqa: E402
 
 DEFAULTS = dict(a=2.0, b=4.0, h=4.0 / 33.0, E=1e5, nu=0.3333, eta=0.375e5,
                 E_s=3e7, nu_s=0.3015, p=1e3)
@@ -259,23 +264,6 @@ def thesis_stresses(r, t, p=DEFAULTS["p"], b=DEFAULTS["b"], tau=None, as_printed
 # ---------------------------------------------------------------------------
 # Independent checks
 # ---------------------------------------------------------------------------
-def _solve(M, rhs):
-    """Gaussian elimination with partial pivoting (small dense systems)."""
-    n = len(rhs)
-    A = [list(map(float, row)) + [float(rhs[i])] for i, row in enumerate(M)]
-    for k in range(n):
-        piv = max(range(k, n), key=lambda r: abs(A[r][k]))
-        A[k], A[piv] = A[piv], A[k]
-        for r in range(k + 1, n):
-            m = A[r][k] / A[k][k]
-            for j in range(k, n + 1):
-                A[r][j] -= m * A[k][j]
-    x = [0.0] * n
-    for k in reversed(range(n)):
-        x[k] = (A[k][n] - sum(A[k][j] * x[j] for j in range(k + 1, n))) / A[k][k]
-    return x
-
-
 def elastic_composite(r, variant="ring", **params):
     """Check 1: the elastic Lame composite with the instantaneous moduli, in the
     textbook (E, nu) form sigma_r = P - R/r^2, sigma_theta = P + R/r^2,
@@ -288,7 +276,7 @@ def elastic_composite(r, variant="ring", **params):
     if variant == "ring":
         kr = Es * h / ((1 - nus ** 2) * b * b)
         uP, uR = ub(E, nu, b)
-        P, R = _solve([[1, -1 / a ** 2], [1 + kr * uP, -1 / b ** 2 + kr * uR]], [-p, 0])
+        P, R = solve_dense([[1, -1 / a ** 2], [1 + kr * uP, -1 / b ** 2 + kr * uR]], [-p, 0])
         layer = (P, R, E, nu)
         if r > b * (1 + 1e-12):
             raise ValueError("r outside the body")
@@ -296,7 +284,7 @@ def elastic_composite(r, variant="ring", **params):
         c = b + h
         uP, uR = ub(E, nu, b)
         vP, vR = ub(Es, nus, b)
-        P, R, Ps, Rs = _solve([[1, -1 / a ** 2, 0, 0],
+        P, R, Ps, Rs = solve_dense([[1, -1 / a ** 2, 0, 0],
                                [1, -1 / b ** 2, -1, 1 / b ** 2],
                                [uP, uR, -vP, -vR],
                                [0, 0, 1, -1 / c ** 2]], [-p, 0, 0, 0])
@@ -318,7 +306,7 @@ def long_time_limit(r, variant="ring", **params):
         u_b = p * (1 - nus ** 2) * b * b / (Es * h)
     else:
         c = b + h
-        P, R = _solve([[1, -1 / b ** 2], [1, -1 / c ** 2]], [-p, 0])
+        P, R = solve_dense([[1, -1 / b ** 2], [1, -1 / c ** 2]], [-p, 0])
         u_b = (1 + nus) / Es * ((1 - 2 * nus) * P * b + R / b)
     A = -p / (2 * K)
     B = b * (u_b - A * b)
@@ -354,11 +342,11 @@ def integrate_ode(t_out, variant="ring", dt=1e-3, richardson=True, **params):
         rhs_b = 2 * G / 3 * P - 2 * G * Q / b ** 2
         if variant == "ring":
             kr = Es * h / ((1 - nus ** 2) * b * b)
-            A, B = _solve([row_a, [row_b[0] + kr * b, row_b[1] + kr / b]], [rhs_a, rhs_b])
+            A, B = solve_dense([row_a, [row_b[0] + kr * b, row_b[1] + kr / b]], [rhs_a, rhs_b])
             return A, B
         # unknowns A, B, As, Bs: sigma_r continuous and u continuous at b,
         # sigma_r(c) = 0 in the elastic annulus
-        A, B, As, Bs = _solve([row_a + [0, 0],
+        A, B, As, Bs = solve_dense([row_a + [0, 0],
                                row_b + [-2 * (lam_s + G_s), 2 * G_s / b ** 2],
                                [b, 1 / b, -b, -1 / b],
                                [0, 0, 2 * (lam_s + G_s), -2 * G_s / c ** 2]],
