@@ -104,5 +104,34 @@ namespace lithostress
     field.update_ghost_values();
   }
 
+  template <int dim>
+  void
+  CreepStrain<dim>::prepare_for_checkpoint()
+  {
+    field.update_ghost_values();
+    transfer = std::make_unique<
+      parallel::distributed::SolutionTransfer<dim, VectorType>>(dofs);
+    transfer->prepare_for_serialization(field);
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::load_from_checkpoint()
+  {
+    dofs.distribute_dofs(fe);
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+    VectorType loaded(dofs.locally_owned_dofs(),
+                      dofs.get_triangulation().get_communicator());
+    parallel::distributed::SolutionTransfer<dim, VectorType> reader(dofs);
+    reader.deserialize(loaded);
+    transfer.reset();
+    field.reinit(dofs.locally_owned_dofs(),
+                 relevant,
+                 dofs.get_triangulation().get_communicator());
+    field.copy_locally_owned_data_from(loaded);
+    field.update_ghost_values();
+  }
+
   template class CreepStrain<2>;
 } // namespace lithostress

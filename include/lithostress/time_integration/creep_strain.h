@@ -33,7 +33,9 @@ namespace lithostress
    *   (L2). Both are exact for a field that is a polynomial of degree n − 1
    *   in each coordinate; otherwise the error is that of the projection,
    *   O(h^n). This sidesteps 9.4.1's ContinuousQuadratureDataTransfer, which
-   *   cannot coarsen (DEALII-9.4.1-NOTES.md).
+   *   cannot coarsen (DEALII-9.4.1-NOTES.md);
+   * - checkpoints are the same SolutionTransfer's serialization, so a run
+   *   resumes on any number of ranks.
    */
   template <int dim>
   class CreepStrain
@@ -83,6 +85,21 @@ namespace lithostress
     /** After it: number the new nodes and transfer the field (collective). */
     void
     finish_mesh_change();
+
+    /**
+     * Attach the field to the triangulation's next save() (collective):
+     * call before `triangulation.save(file)`.
+     */
+    void
+    prepare_for_checkpoint();
+
+    /**
+     * After `triangulation.load(file)` — on any number of ranks, the mesh
+     * repartitioned — number the nodes and read the field back
+     * (collective).
+     */
+    void
+    load_from_checkpoint();
 
     /** The field's DoFs and values (ghosted), for evaluation at arbitrary
      * points with FEValues. */
