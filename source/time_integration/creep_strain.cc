@@ -76,13 +76,36 @@ namespace lithostress
   }
 
   template <int dim>
-  void
-  CreepStrain<dim>::prepare_for_mesh_change()
+  parallel::distributed::SolutionTransfer<dim,
+                                          typename CreepStrain<dim>::VectorType>
+    &
+    CreepStrain<dim>::new_transfer()
   {
     field.update_ghost_values();
     transfer = std::make_unique<
       parallel::distributed::SolutionTransfer<dim, VectorType>>(dofs);
-    transfer->prepare_for_coarsening_and_refinement(field);
+    return *transfer;
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::renumber_and_read(
+    const std::function<void(VectorType &)> &read)
+  {
+    setup();
+    VectorType owned(dofs.locally_owned_dofs(),
+                     dofs.get_triangulation().get_communicator());
+    read(owned);
+    transfer.reset();
+    field.copy_locally_owned_data_from(owned);
+    field.update_ghost_values();
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::prepare_for_mesh_change()
+  {
+    new_transfer().prepare_for_coarsening_and_refinement(field);
   }
 
   template <int dim>
@@ -90,47 +113,24 @@ namespace lithostress
   CreepStrain<dim>::finish_mesh_change()
   {
     Assert(transfer, ExcMessage("prepare_for_mesh_change() was not called"));
-    dofs.distribute_dofs(fe);
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
-    VectorType transferred(dofs.locally_owned_dofs(),
-                           dofs.get_triangulation().get_communicator());
-    transfer->interpolate(transferred);
-    transfer.reset();
-    field.reinit(dofs.locally_owned_dofs(),
-                 relevant,
-                 dofs.get_triangulation().get_communicator());
-    field.copy_locally_owned_data_from(transferred);
-    field.update_ghost_values();
+    renumber_and_read([&](VectorType &owned) { transfer->interpolate(owned); });
   }
 
   template <int dim>
   void
   CreepStrain<dim>::prepare_for_checkpoint()
   {
-    field.update_ghost_values();
-    transfer = std::make_unique<
-      parallel::distributed::SolutionTransfer<dim, VectorType>>(dofs);
-    transfer->prepare_for_serialization(field);
+    new_transfer().prepare_for_serialization(field);
   }
 
   template <int dim>
   void
   CreepStrain<dim>::load_from_checkpoint()
   {
-    dofs.distribute_dofs(fe);
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
-    VectorType loaded(dofs.locally_owned_dofs(),
-                      dofs.get_triangulation().get_communicator());
-    parallel::distributed::SolutionTransfer<dim, VectorType> reader(dofs);
-    reader.deserialize(loaded);
-    transfer.reset();
-    field.reinit(dofs.locally_owned_dofs(),
-                 relevant,
-                 dofs.get_triangulation().get_communicator());
-    field.copy_locally_owned_data_from(loaded);
-    field.update_ghost_values();
+    renumber_and_read([&](VectorType &owned) {
+      parallel::distributed::SolutionTransfer<dim, VectorType> reader(dofs);
+      reader.deserialize(owned);
+    });
   }
 
   template class CreepStrain<2>;

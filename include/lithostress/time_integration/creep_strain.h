@@ -9,6 +9,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -116,6 +117,15 @@ namespace lithostress
     }
 
   private:
+    /** A transfer attached to the current field (ghosts updated). */
+    parallel::distributed::SolutionTransfer<dim, VectorType> &
+    new_transfer();
+
+    /** Number the nodes of the current mesh (setup()) and take the owned
+     * values from @p read (an interpolation or a deserialization). */
+    void
+    renumber_and_read(const std::function<void(VectorType &)> &read);
+
     typename DoFHandler<dim>::active_cell_iterator
     dof_cell(
       const typename Triangulation<dim>::active_cell_iterator &cell) const;
