@@ -16,6 +16,7 @@
 #include <lithostress/postprocess/surface_profile.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
 #include <lithostress/simulator.h>
+#include <lithostress/time_integration/viscoelastic_time_loop.h>
 
 #include <sys/resource.h>
 
@@ -84,13 +85,16 @@ namespace lithostress
     Figures<dim>::declare_parameters(prm);
     ThinPlateFlexure::declare_parameters(prm);
     GriffithFailure::declare_parameters(prm);
+    TimeStepping::declare_parameters(prm);
     prm.enter_subsection("Convergence study");
     ReferenceSolutionSelector<dim>::declare_parameters(prm);
     prm.declare_entry("Points",
                       "",
                       Patterns::Anything(),
                       "Points at which displacement and stress are reported "
-                      "each cycle: `x1, y1; x2, y2` [length unit].");
+                      "each cycle (point_values.csv) and, in the visco-"
+                      "elastic loop, at each output time (point_history.csv): "
+                      "`x1, y1; x2, y2` [length unit].");
     prm.leave_subsection();
   }
 
@@ -227,6 +231,10 @@ namespace lithostress
                         "needs Output/Surface profile boundary");
 
     refinement.parse_parameters(prm);
+    time_stepping.parse_parameters(prm);
+    if (time_stepping.enabled)
+      creep = std::make_unique<CreepIntegrator<dim>>(triangulation,
+                                                     fe_space->degree() + 1);
     linear_solver = LinearSolverSelector<dim>::create(prm, *fe_space, loads);
     solution_output.parse_parameters(prm);
     memory_budget.parse_parameters(prm, communicator);
@@ -343,13 +351,7 @@ namespace lithostress
     system.locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler,
                                             system.locally_relevant);
-    system.constraints.clear();
-    system.constraints.reinit(system.locally_relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, system.constraints);
-    on_all_ranks(communicator, [&]() {
-      prescribed_displacement.apply(dof_handler, *fe_space, system.constraints);
-    });
-    system.constraints.close();
+    make_constraints();
     phase_done("constraints");
     system.reinit(dof_handler, communicator, linear_solver->needs_matrix());
     phase_done("sparsity pattern and matrix");
@@ -362,6 +364,22 @@ namespace lithostress
 
   template <int dim>
   void
+  Simulator<dim>::make_constraints()
+  {
+    system.constraints.clear();
+    system.constraints.reinit(system.locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, system.constraints);
+    on_all_ranks(communicator, [&]() {
+      prescribed_displacement.apply(dof_handler,
+                                    *fe_space,
+                                    system.constraints,
+                                    time);
+    });
+    system.constraints.close();
+  }
+
+  template <int dim>
+  void
   Simulator<dim>::assemble_system()
   {
     TimerOutput::Scope t(*timer, "assemble");
@@ -370,7 +388,10 @@ namespace lithostress
       load->prepare_for_mesh(triangulation,
                              fe_space->mapping(),
                              fe_space->face_quadrature()[0]);
+    for (const auto &load : loads.loads())
+      load->set_time(time);
     ElasticAssembler<dim> assembler(*fe_space, *stress_model, loads);
+    assembler.set_history_strain(history_strain);
     assembler.assemble(dof_handler, system, linear_solver->needs_matrix());
     statistics.assemble_time = clock.wall_time();
   }
@@ -492,7 +513,10 @@ namespace lithostress
   {
     try
       {
-        run_cycles();
+        if (time_stepping.enabled)
+          ViscoelasticTimeLoop<dim>(*this).run();
+        else
+          run_cycles();
       }
     catch (const RunInterrupted &stop)
       {
@@ -546,7 +570,7 @@ namespace lithostress
 
   template <int dim>
   void
-  Simulator<dim>::run_cycles()
+  Simulator<dim>::write_run_header()
   {
     log << "lithostress: " << Utilities::MPI::n_mpi_processes(communicator)
         << " MPI rank(s), output in " << output_directory << "/" << std::endl;
@@ -562,67 +586,88 @@ namespace lithostress
       log << "Griffith test: the lithostatic stress -rho g depth of each "
              "material is added to the principal stresses before the test "
              "(the model has no full body force), as in the thesis' FAIL.\n";
+    if (stress_model->has_viscous_material() && !time_stepping.enabled)
+      log << "Note: the viscosities are not used (Time stepping/Enabled = "
+             "false): this is the elastic response at t = 0.\n";
 
-    {
-      TimerOutput::Scope t(*timer, "refine");
-      Timer              clock(communicator, true);
-      if (refinement.initial_global_refinement > 0)
-        triangulation.refine_global(refinement.initial_global_refinement);
-      statistics.mesh_time = clock.wall_time();
-    }
+    TimerOutput::Scope t(*timer, "refine");
+    Timer              clock(communicator, true);
+    if (refinement.initial_global_refinement > 0)
+      triangulation.refine_global(refinement.initial_global_refinement);
+    statistics.mesh_time = clock.wall_time();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::refine_mesh(const std::string           &mesh,
+                              const std::function<void()> &before_change)
+  {
+    stop_if_requested("mesh refinement");
+    TimerOutput::Scope t(*timer, "refine");
+    Timer              clock(communicator, true);
+    const double dofs_per_cell = static_cast<double>(dof_handler.n_dofs()) /
+                                 triangulation.n_global_active_cells();
+    refinement.refine(triangulation,
+                      dof_handler,
+                      *fe_space,
+                      *stress_model,
+                      solution,
+                      [&](const double cells) {
+                        memory_budget.check(mesh,
+                                            cells,
+                                            dofs_per_cell * cells,
+                                            linear_solver->name(),
+                                            linear_solver->memory_per_dof(),
+                                            "Mesh refinement/Number of cycles, "
+                                            "Refine fraction or Maximum level");
+                        if (before_change)
+                          before_change();
+                      });
+    statistics.mesh_time = clock.wall_time();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::compute_cycle()
+  {
+    stop_if_requested("set-up");
+    setup_dofs();
+    stop_if_requested("assembly");
+    assemble_system();
+    // The first assembly has evaluated every load on the first mesh:
+    // the model is accepted, and only now is anything written.
+    if (cycle == 0)
+      start_output();
+    stop_if_requested("solve");
+    solve();
+    stop_if_requested("postprocessing");
+    postprocess(cycle);
+    // The table so far, after every cycle: a run stopped by an error
+    // in a later cycle keeps the cycles it finished.
+    on_all_ranks(communicator, [&]() {
+      if (!study.empty() && Utilities::MPI::this_mpi_process(communicator) == 0)
+        {
+          OutputFile csv(output_directory + "/convergence.csv");
+          study.write_csv(csv);
+          csv.commit();
+        }
+    });
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::run_cycles()
+  {
+    write_run_header();
     for (cycle = 0; cycle < refinement.n_cycles; ++cycle)
       {
         if (cycle > 0)
-          {
-            stop_if_requested("mesh refinement");
-            TimerOutput::Scope t(*timer, "refine");
-            Timer              clock(communicator, true);
-            const double       dofs_per_cell =
-              static_cast<double>(dof_handler.n_dofs()) /
-              triangulation.n_global_active_cells();
-            refinement.refine(triangulation,
-                              dof_handler,
-                              *fe_space,
-                              *stress_model,
-                              solution,
-                              [&](const double cells) {
-                                memory_budget.check(
-                                  "the mesh of cycle " + std::to_string(cycle),
-                                  cells,
-                                  dofs_per_cell * cells,
-                                  linear_solver->name(),
-                                  linear_solver->memory_per_dof(),
-                                  "Mesh refinement/Number of cycles, Refine "
-                                  "fraction or Maximum level");
-                              });
-            statistics.mesh_time = clock.wall_time();
-          }
-        stop_if_requested("set-up");
-        setup_dofs();
-        stop_if_requested("assembly");
-        assemble_system();
-        // The first assembly has evaluated every load on the first mesh:
-        // the model is accepted, and only now is anything written.
-        if (cycle == 0)
-          start_output();
-        stop_if_requested("solve");
-        solve();
-        stop_if_requested("postprocessing");
-        postprocess(cycle);
-        // The table so far, after every cycle: a run stopped by an error
-        // in a later cycle keeps the cycles it finished.
-        on_all_ranks(communicator, [&]() {
-          if (!study.empty() &&
-              Utilities::MPI::this_mpi_process(communicator) == 0)
-            {
-              OutputFile csv(output_directory + "/convergence.csv");
-              study.write_csv(csv);
-              csv.commit();
-            }
-        });
+          refine_mesh("the mesh of cycle " + std::to_string(cycle));
+        compute_cycle();
         TimerOutput::Scope t(*timer, "output");
         if (!solution_output.last_only || cycle + 1 == refinement.n_cycles)
           solution_output.write(output_directory,
+                                cycle,
                                 cycle,
                                 dof_handler,
                                 *fe_space,
@@ -630,7 +675,13 @@ namespace lithostress
                                 griffith,
                                 solution);
       }
+    write_final_results();
+  }
 
+  template <int dim>
+  void
+  Simulator<dim>::write_final_results()
+  {
     if (!study.empty())
       {
         std::ostringstream table;

@@ -28,7 +28,10 @@
 #include <lithostress/reference_solutions/reference_solution.h>
 #include <lithostress/refinement/mesh_refinement.h>
 #include <lithostress/solvers/linear_solver.h>
+#include <lithostress/time_integration/creep_integrator.h>
+#include <lithostress/time_integration/time_stepping.h>
 
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -37,6 +40,9 @@
 namespace lithostress
 {
   using namespace dealii;
+
+  template <int dim>
+  class ViscoelasticTimeLoop;
 
   /**
    * The lithostress simulator: wires geometry, materials, loads, boundary
@@ -91,6 +97,10 @@ namespace lithostress
   private:
     void
     setup_dofs();
+    /** Hanging-node constraints and the prescribed displacements at the
+     * current time. */
+    void
+    make_constraints();
     void
     assemble_system();
     void
@@ -121,9 +131,25 @@ namespace lithostress
     /** Read and check the model (the constructor's work). */
     void
     read_model();
+    /** The log's header and the initial global refinement. */
+    void
+    write_run_header();
+    /** Refine the mesh once (Mesh refinement section); @p mesh names it
+     * in the memory check, @p before_change runs once the cells are
+     * marked, before the mesh changes (to attach data to transfer). */
+    void
+    refine_mesh(const std::string           &mesh,
+                const std::function<void()> &before_change = {});
+    /** Set up, assemble, solve and postprocess the current cycle. */
+    void
+    compute_cycle();
     /** The refinement cycles (run()'s work). */
     void
     run_cycles();
+    /** After the last cycle or time step: convergence table, force
+     * balance, profiles and figures, statistics and the timing table. */
+    void
+    write_final_results();
 
     MPI_Comm                     communicator;
     ParameterHandler            &prm;
@@ -150,7 +176,18 @@ namespace lithostress
     MeshRefinement<dim>                       refinement;
     MemoryBudget                              memory_budget;
     /** The cycle being computed (for the message of an interrupted run). */
-    unsigned int             cycle = 0;
+    unsigned int cycle = 0;
+    /** The model time [s] at which loads and prescribed displacements are
+     * evaluated. */
+    double time = 0;
+    /** The visco-elastic time loop's settings and creep history (the
+     * history only if the loop runs). */
+    TimeStepping                          time_stepping;
+    std::unique_ptr<CreepIntegrator<dim>> creep;
+    /** The history strain of the time step being assembled, or nullptr. */
+    const CreepStrain<dim> *history_strain = nullptr;
+
+    friend class ViscoelasticTimeLoop<dim>;
     SolutionOutput<dim>      solution_output;
     std::vector<Point<dim>>  points;
     types::boundary_id       surface_boundary   = numbers::invalid_boundary_id;

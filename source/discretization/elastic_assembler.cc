@@ -187,6 +187,7 @@ namespace lithostress
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> dofs;
+    std::vector<Vector<double>>          history_values;
 
     if (with_matrix)
       system.matrix = 0;
@@ -209,7 +210,8 @@ namespace lithostress
               fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
             const Material &material =
               stress_model.materials(cell->material_id());
-            const ElasticModuli<dim> &moduli = stress_model.moduli(material.id);
+            const ElasticModuli<dim> &moduli =
+              stress_model.step_moduli(material.id);
 
             cell_matrix.reinit(n, n);
             cell_rhs.reinit(n);
@@ -240,6 +242,14 @@ namespace lithostress
                              moduli,
                              cell_matrix,
                              cell_rhs);
+
+            if (history_strain != nullptr &&
+                stress_model.maxwell(material.id).is_viscous())
+              {
+                history_strain->get(cell, history_values);
+                add_initial_strain_terms(
+                  fe_values, u, moduli, history_values, cell_rhs);
+              }
 
             if (with_matrix && direct->applies(dofs))
               direct->add(dofs, cell_matrix, cell_rhs);
@@ -318,6 +328,28 @@ namespace lithostress
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int j = i + 1; j < n; ++j)
         cell_matrix(i, j) = cell_matrix(j, i);
+  }
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::add_initial_strain_terms(
+    const FEValues<dim>               &fe_values,
+    const FEValuesExtractors::Vector  &displacement,
+    const ElasticModuli<dim>          &moduli,
+    const std::vector<Vector<double>> &strains,
+    Vector<double>                    &cell_rhs)
+  {
+    AssertDimension(strains.size(), fe_values.n_quadrature_points);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const SymmetricTensor<2, dim> sigma0 =
+          moduli.initial_strain_stress(CreepStrain<dim>::tensor(strains[q]))
+            .first;
+        const double JxW = fe_values.JxW(q);
+        for (unsigned int i = 0; i < fe_values.dofs_per_cell; ++i)
+          cell_rhs(i) -=
+            (fe_values[displacement].symmetric_gradient(i, q) * sigma0) * JxW;
+      }
   }
 
   template class ElasticAssembler<2>;

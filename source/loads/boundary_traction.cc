@@ -150,7 +150,8 @@ namespace lithostress
           Tensor<1, dim> s;
           s[0] = n[1];
           s[1] = -n[0];
-          return part.normal->value(p) * n + part.shear->value(p) * s;
+          return part.normal->value(p, this->time()) * n +
+                 part.shear->value(p, this->time()) * s;
         }
     return Tensor<1, dim>();
   }

@@ -76,7 +76,7 @@ namespace lithostress
   ThermalStrain<dim>::initial_strain(const Point<dim> &p) const
   {
     return (volumetric ? coefficient / 3.0 : coefficient) *
-           temperature_change->value(p);
+           temperature_change->value(p, this->time());
   }
 
   template <int dim>
@@ -131,7 +131,7 @@ namespace lithostress
           {
             values.reinit(cell);
             for (const Point<dim> &p : values.get_quadrature_points())
-              temperature_change->value(p);
+              temperature_change->value(p, this->time());
           }
     });
   }

@@ -18,8 +18,18 @@ namespace lithostress
   template <int dim>
   ElasticModuli<dim>::ElasticModuli(const Material  &material,
                                     const PlaneState plane_state)
-      : mu(material.shear_modulus())
-      , lambda_3d(material.lame_lambda())
+      : ElasticModuli(material.lame_lambda(),
+                      material.shear_modulus(),
+                      plane_state)
+  {
+  }
+
+  template <int dim>
+  ElasticModuli<dim>::ElasticModuli(const double     lambda_3d,
+                                    const double     mu,
+                                    const PlaneState plane_state)
+      : mu(mu)
+      , lambda_3d(lambda_3d)
       , plane_state(plane_state)
   {
     lambda_in_plane = (plane_state == PlaneState::plane_strain || dim == 3)
@@ -61,6 +71,30 @@ namespace lithostress
       // E/(1 − ν) = 2(λ* + μ) = 2μ(3λ + 2μ)/(λ + 2μ).
       return {-2.0 * mu * bulk3 / (lambda_3d + 2.0 * mu) * initial_strain, 0.0};
     return {-bulk3 * initial_strain, -bulk3 * initial_strain};
+  }
+
+  template <int dim>
+  std::pair<SymmetricTensor<2, dim>, double>
+  ElasticModuli<dim>::initial_strain_stress(
+    const SymmetricTensor<2, 3> &initial_strain) const
+  {
+    // The 3-D stress −(λ tr ε0 I + 2μ ε0) at zero total strain.
+    const double            volumetric = lambda_3d * trace(initial_strain);
+    SymmetricTensor<2, dim> in_plane;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        in_plane[i][j] =
+          -2.0 * mu * initial_strain[i][j] - (i == j ? volumetric : 0.0);
+    double zz = -2.0 * mu * initial_strain[2][2] - volumetric;
+    if (plane_state == PlaneState::plane_stress && dim == 2)
+      {
+        // ε_zz = −σ_zz/(λ + 2μ) removes σ_zz and adds λ ε_zz in plane.
+        const double strain_zz = -zz / (lambda_3d + 2.0 * mu);
+        for (unsigned int i = 0; i < dim; ++i)
+          in_plane[i][i] += lambda_3d * strain_zz;
+        zz = 0;
+      }
+    return {in_plane, zz};
   }
 
   template class ElasticModuli<2>;

@@ -46,7 +46,8 @@ namespace lithostress
   template <int dim>
   void
   SolutionOutput<dim>::write(const std::string                   &directory,
-                             const unsigned int                   cycle,
+                             const unsigned int                   index,
+                             const double                         time,
                              const DoFHandler<dim>               &dof_handler,
                              const FiniteElementSpace<dim>       &fe_space,
                              const StressModel<dim>              &stress_model,
@@ -56,6 +57,7 @@ namespace lithostress
     if (!enabled)
       return;
     const StressPostprocessor<dim> postprocessor(stress_model,
+                                                 fe_space.mapping(),
                                                  fe_space.n_fields(),
                                                  griffith);
     DataOut<dim>                   data_out;
@@ -69,18 +71,38 @@ namespace lithostress
     const auto   &tria = dof_handler.get_triangulation();
     Vector<float> material_id(tria.n_active_cells());
     Vector<float> rank(tria.n_active_cells());
-    unsigned int  index = 0;
+    unsigned int  cell_index = 0;
     for (const auto &cell : tria.active_cell_iterators())
       {
         if (cell->is_locally_owned())
           {
-            material_id(index) = cell->material_id();
-            rank(index)        = cell->subdomain_id();
+            material_id(cell_index) = cell->material_id();
+            rank(cell_index)        = cell->subdomain_id();
           }
-        ++index;
+        ++cell_index;
       }
     data_out.add_data_vector(material_id, "material_id");
     data_out.add_data_vector(rank, "mpi_rank");
+    const CreepStrain<dim> *creep = stress_model.attached_creep_strain();
+    Vector<float>           maxwell_time(tria.n_active_cells());
+    if (creep != nullptr)
+      {
+        data_out.add_data_vector(creep->dof_handler(),
+                                 creep->values(),
+                                 std::vector<std::string>{"creep_xx",
+                                                          "creep_yy",
+                                                          "creep_xy",
+                                                          "creep_zz"});
+        cell_index = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            if (cell->is_locally_owned())
+              maxwell_time(cell_index) =
+                stress_model.maxwell(cell->material_id()).maxwell_time();
+            ++cell_index;
+          }
+        data_out.add_data_vector(maxwell_time, "maxwell_time");
+      }
     data_out.build_patches(fe_space.mapping(),
                            subdivisions == 0 ? fe_space.degree() : subdivisions,
                            DataOut<dim>::curved_inner_cells);
@@ -90,7 +112,7 @@ namespace lithostress
     const MPI_Comm     comm    = dof_handler.get_communicator();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int my_rank = Utilities::MPI::this_mpi_process(comm);
-    const std::string  base  = "solution_" + Utilities::int_to_string(cycle, 3);
+    const std::string  base  = "solution_" + Utilities::int_to_string(index, 3);
     const auto         piece = [&](const unsigned int r) {
       return base + "." +
              Utilities::int_to_string(r,
@@ -111,7 +133,7 @@ namespace lithostress
       OutputFile pvtu(directory + "/" + base + ".pvtu");
       data_out.write_pvtu_record(pvtu, pieces);
       pvtu.commit();
-      records.emplace_back(cycle, base + ".pvtu");
+      records.emplace_back(time, base + ".pvtu");
       OutputFile pvd(directory + "/solution.pvd");
       DataOutBase::write_pvd_record(pvd, records);
       pvd.commit();

@@ -44,7 +44,12 @@ namespace lithostress
               const SymmetricTensor<2, dim> s_exact = reference.stress(p);
               const SymmetricTensor<2, dim> strain_h = symmetrize(grad_h[q]);
               const SymmetricTensor<2, dim> s_h =
-                stress_model.stress(cell->material_id(), p, strain_h).in_plane;
+                stress_model
+                  .stress(cell,
+                          fe_values.get_quadrature().point(q),
+                          p,
+                          strain_h)
+                  .in_plane;
               const SymmetricTensor<2, dim> ds = s_h - s_exact;
               e[0] += (u_h[q] - u_exact).norm_square() * JxW;
               e[1] += (ds * (S * ds)) * JxW;

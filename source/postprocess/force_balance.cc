@@ -115,6 +115,7 @@ namespace lithostress
     FullMatrix<double>                   cell_matrix, load_matrix;
     Vector<double>                       u_cell, cell_residual, load_rhs;
     Vector<double>                       load_force;
+    std::vector<Vector<double>>          creep_values;
     std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -165,6 +166,17 @@ namespace lithostress
                     force;
                   cell_residual(i) -= force;
                 }
+            }
+          // The creep strain's share of the internal force ∫ ε(v) : σ.
+          const CreepStrain<dim> *creep = stress_model.attached_creep_strain();
+          if (creep != nullptr &&
+              stress_model.maxwell(material.id).is_viscous())
+            {
+              creep->get(cell, creep_values);
+              load_rhs.reinit(n);
+              ElasticAssembler<dim>::add_initial_strain_terms(
+                fe_values, u, moduli, creep_values, load_rhs);
+              cell_residual -= load_rhs;
             }
           for (unsigned int i = 0; i < n; ++i)
             residual(dofs[i]) += cell_residual(i);

@@ -105,7 +105,8 @@ namespace lithostress
             fe_values[u].get_function_values(solution, value);
             fe_values[u].get_function_gradients(solution, gradient);
             const StressState<dim> stress =
-              stress_model.stress(cell->material_id(),
+              stress_model.stress(cell,
+                                  q.point(0),
                                   fe_values.quadrature_point(0),
                                   symmetrize(gradient[0]));
             double *v = &local[k * n_values];

@@ -7,9 +7,11 @@ namespace lithostress
   template <int dim>
   StressPostprocessor<dim>::StressPostprocessor(
     const StressModel<dim> &stress_model,
+    const Mapping<dim>     &mapping,
     const unsigned int      n_fields,
     const GriffithFailure  &griffith)
       : stress_model(stress_model)
+      , mapping(mapping)
       , n_fields(n_fields)
       , griffith(griffith)
   {
@@ -79,9 +81,18 @@ namespace lithostress
               u[d] += inputs.solution_values[q][f * dim + d];
               grad[d] += inputs.solution_gradients[q][f * dim + d];
             }
-        const Point<dim>      &p = inputs.evaluation_points[q];
+        const Point<dim> &p = inputs.evaluation_points[q];
+        // The creep strain lives on the unit cell: locate the point there.
+        const bool with_creep =
+          stress_model.attached_creep_strain() != nullptr &&
+          stress_model.maxwell(material.id).is_viscous();
         const StressState<dim> s =
-          stress_model.stress(material.id, p, symmetrize(grad));
+          with_creep
+            ? stress_model.stress(cell,
+                                  mapping.transform_real_to_unit_cell(cell, p),
+                                  p,
+                                  symmetrize(grad))
+            : stress_model.stress(material.id, p, symmetrize(grad));
         const StressAnalysis a = analyse_stress(s, material, p, griffith);
         for (unsigned int d = 0; d < dim; ++d)
           computed[q][d] = u[d];

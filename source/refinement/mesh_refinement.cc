@@ -170,7 +170,8 @@ namespace lithostress
                 const auto ci = stress_fe.system_to_component_index(i);
                 const SymmetricTensor<2, dim> s =
                   stress_model
-                    .stress(cell->material_id(),
+                    .stress(cell,
+                            fv.get_quadrature().point(ci.second),
                             fv.quadrature_point(ci.second),
                             symmetrize(grads[ci.second]))
                     .in_plane;
@@ -224,7 +225,8 @@ namespace lithostress
               {
                 const SymmetricTensor<2, dim> s =
                   stress_model
-                    .stress(cell->material_id(),
+                    .stress(cell,
+                            fv.get_quadrature().point(q),
                             fv.quadrature_point(q),
                             symmetrize(grads[q]))
                     .in_plane;

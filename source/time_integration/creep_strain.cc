@@ -53,6 +53,69 @@ namespace lithostress
   }
 
   template <int dim>
+  SymmetricTensor<2, 3>
+  CreepStrain<dim>::value(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    const Point<dim>                                        &unit) const
+  {
+    std::vector<types::global_dof_index> indices(fe.n_dofs_per_cell());
+    dof_cell(cell)->get_dof_indices(indices);
+    Vector<double> c(n_components);
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      c[fe.system_to_component_index(i).first] +=
+        field(indices[i]) * fe.shape_value(i, unit);
+    return tensor(c);
+  }
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  CreepStrain<dim>::tensor(const Vector<double> &c)
+  {
+    SymmetricTensor<2, 3> t;
+    if constexpr (dim == 2)
+      {
+        t[0][0] = c[0];
+        t[1][1] = c[1];
+        t[0][1] = c[2];
+        t[2][2] = c[3];
+      }
+    else
+      {
+        t[0][0] = c[0];
+        t[1][1] = c[1];
+        t[2][2] = c[2];
+        t[0][1] = c[3];
+        t[1][2] = c[4];
+        t[0][2] = c[5];
+      }
+    return t;
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::components(const SymmetricTensor<2, 3> &t,
+                               Vector<double>              &c)
+  {
+    c.reinit(n_components);
+    if constexpr (dim == 2)
+      {
+        c[0] = t[0][0];
+        c[1] = t[1][1];
+        c[2] = t[0][1];
+        c[3] = t[2][2];
+      }
+    else
+      {
+        c[0] = t[0][0];
+        c[1] = t[1][1];
+        c[2] = t[2][2];
+        c[3] = t[0][1];
+        c[4] = t[1][2];
+        c[5] = t[0][2];
+      }
+  }
+
+  template <int dim>
   void
   CreepStrain<dim>::set(
     const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -18,6 +18,11 @@ namespace lithostress
    * the constraints into the distributed matrix and right-hand side. Cells
    * of any active FE index are handled through the displacement field of
    * that index.
+   *
+   * In a step of the visco-elastic loop the stiffness is that of the step
+   * moduli (StressModel::step_moduli(), the relaxed shear modulus) and the
+   * history strain c* of the step (MaxwellMaterial) adds the initial-strain
+   * term −∫ ε(v) : σ(c*) dx to the right-hand side.
    */
   template <int dim>
   class ElasticAssembler
@@ -26,6 +31,14 @@ namespace lithostress
     ElasticAssembler(const FiniteElementSpace<dim> &fe_space,
                      const StressModel<dim>        &stress_model,
                      const LoadCollection<dim>     &loads);
+
+    /** Assemble with the history strain @p history of a time step
+     * (nullptr: none); the field lives on the cells' quadrature points. */
+    void
+    set_history_strain(const CreepStrain<dim> *history)
+    {
+      history_strain = history;
+    }
 
     /** Assemble matrix (if @p with_matrix) and right-hand side. */
     void
@@ -62,6 +75,19 @@ namespace lithostress
                    FullMatrix<double>               &cell_matrix,
                    Vector<double>                   &cell_rhs);
 
+    /**
+     * Add the initial-strain term −∫ ε(φ_i) : σ0 dx of the 3-D strains
+     * @p strains (per quadrature point of @p fe_values, as
+     * CreepStrain components), whose stresses σ0 follow from @p moduli, to
+     * @p cell_rhs.
+     */
+    static void
+    add_initial_strain_terms(const FEValues<dim>               &fe_values,
+                             const FEValuesExtractors::Vector  &displacement,
+                             const ElasticModuli<dim>          &moduli,
+                             const std::vector<Vector<double>> &strains,
+                             Vector<double>                    &cell_rhs);
+
     /** The cell values the assembly needs, for @p fe_space. */
     static hp::FEValues<dim>
     cell_values(const FiniteElementSpace<dim> &fe_space);
@@ -74,6 +100,7 @@ namespace lithostress
     const FiniteElementSpace<dim> &fe_space;
     const StressModel<dim>        &stress_model;
     const LoadCollection<dim>     &loads;
+    const CreepStrain<dim>        *history_strain = nullptr;
   };
 } // namespace lithostress
 

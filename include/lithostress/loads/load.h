@@ -128,6 +128,21 @@ namespace lithostress
                        SymmetricTensor<2, dim>  &stress,
                        double                   &sigma_zz) const;
 
+    /** Evaluate the load's functions of time t at @p time [s] from now
+     * on; the visco-elastic loop sets it before each assembly. */
+    void
+    set_time(const double time)
+    {
+      current_time = time;
+    }
+
+    /** The time [s] the load is evaluated at. */
+    double
+    time() const
+    {
+      return current_time;
+    }
+
     /** A one-line description for the log (what acts where). */
     virtual std::string
     description() const = 0;
@@ -170,6 +185,9 @@ namespace lithostress
     {
       return !changes_stiffness();
     }
+
+  private:
+    double current_time = 0;
   };
 } // namespace lithostress
 

@@ -47,6 +47,12 @@ namespace lithostress
   public:
     ElasticModuli(const Material &material, const PlaneState plane_state);
 
+    /** The moduli with 3-D Lamé parameters @p lambda_3d and @p mu (the
+     * relaxed moduli of a Maxwell time step, MaxwellMaterial). */
+    ElasticModuli(const double     lambda_3d,
+                  const double     mu,
+                  const PlaneState plane_state);
+
     /** The in-plane stiffness C: σ = C ε. */
     const SymmetricTensor<4, dim> &
     stiffness() const
@@ -78,6 +84,15 @@ namespace lithostress
      */
     std::pair<double, double>
     isotropic_initial_strain_stress(const double initial_strain) const;
+
+    /**
+     * The stress −C ε0 of a general 3-D initial strain @p initial_strain
+     * (a creep strain) when the in-plane strain is zero: the in-plane part
+     * and σ_zz. Plane strain keeps ε_zz = 0; plane stress lets ε_zz adjust
+     * so that σ_zz = 0, which adds λ δε_zz to the in-plane diagonal.
+     */
+    std::pair<SymmetricTensor<2, dim>, double>
+    initial_strain_stress(const SymmetricTensor<2, 3> &initial_strain) const;
 
     /** The in-plane Lamé parameters (λ_in_plane, μ). */
     LameParameters

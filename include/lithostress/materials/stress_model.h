@@ -7,6 +7,8 @@
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/material.h>
+#include <lithostress/materials/maxwell_material.h>
+#include <lithostress/time_integration/creep_strain.h>
 
 #include <map>
 #include <vector>
@@ -28,6 +30,12 @@ namespace lithostress
    * §3.8). Output, point values, stress–depth profiles, error norms and
    * refinement indicators all take their stress from here, so that an
    * initial strain enters every result once and in the same way.
+   *
+   * With Maxwell materials (SPEC §3.3) the model also holds the creep-strain
+   * history (attach_creep_strain()): every reported stress is then
+   * σ = C (ε − c) + thermal stress, with the elastic moduli and the creep
+   * strain c at the point, and a time step's linear system uses the relaxed
+   * moduli of step_moduli() (set_time_step()).
    */
   template <int dim>
   class StressModel
@@ -43,11 +51,89 @@ namespace lithostress
            const Point<dim>              &p,
            const SymmetricTensor<2, dim> &strain) const;
 
-    /** The moduli of material @p id. */
+    /** The stress at @p p for strain @p strain and creep strain @p creep
+     * (3-D, deviatoric). */
+    StressState<dim>
+    stress(const types::material_id       id,
+           const Point<dim>              &p,
+           const SymmetricTensor<2, dim> &strain,
+           const SymmetricTensor<2, 3>   &creep) const;
+
+    /**
+     * The stress at the point @p p of @p cell whose unit-cell coordinates
+     * are @p unit: the creep strain attached to the model, if any, is
+     * evaluated there. What every reported stress goes through.
+     */
+    StressState<dim>
+    stress(const typename Triangulation<dim>::active_cell_iterator &cell,
+           const Point<dim>                                        &unit,
+           const Point<dim>                                        &p,
+           const SymmetricTensor<2, dim> &strain) const;
+
+    /**
+     * The stress of the current time step's law at @p p: the step moduli
+     * (relaxed shear modulus) with the history strain @p history as initial
+     * strain (MaxwellMaterial). Equal to stress() for elastic materials or
+     * a step of length 0.
+     */
+    StressState<dim>
+    step_stress(const types::material_id       id,
+                const Point<dim>              &p,
+                const SymmetricTensor<2, dim> &strain,
+                const SymmetricTensor<2, 3>   &history) const;
+
+    /** The elastic moduli of material @p id. */
     const ElasticModuli<dim> &
     moduli(const types::material_id id) const
     {
       return moduli_of.at(id);
+    }
+
+    /** The moduli of the current time step's linear system (assembly and
+     * matrix-free operators): relaxed for Maxwell materials, elastic
+     * before the first step. */
+    const ElasticModuli<dim> &
+    step_moduli(const types::material_id id) const
+    {
+      return step_moduli_of.at(id);
+    }
+
+    /** The Maxwell law of material @p id. */
+    const MaxwellMaterial<dim> &
+    maxwell(const types::material_id id) const
+    {
+      return maxwell_of.at(id);
+    }
+
+    /** Whether any material creeps. */
+    bool
+    has_viscous_material() const;
+
+    /** Use the step moduli of a step of length @p dt with weight
+     * @p theta (dt = 0: the elastic moduli). */
+    void
+    set_time_step(const double dt, const double theta);
+
+    /** The step length and weight set last. */
+    std::pair<double, double>
+    time_step() const
+    {
+      return {step_length, step_theta};
+    }
+
+    /** Include the creep strain @p creep in every reported stress
+     * (nullptr: none). */
+    void
+    attach_creep_strain(const CreepStrain<dim> *creep)
+    {
+      creep_strain = creep;
+    }
+
+    /** The attached creep strain, or nullptr. */
+    const CreepStrain<dim> *
+    attached_creep_strain() const
+    {
+      return creep_strain;
     }
 
     /** Whether any load carries an initial strain. */
@@ -61,8 +147,12 @@ namespace lithostress
     const PlaneState       plane_state;
 
   private:
-    std::map<types::material_id, ElasticModuli<dim>> moduli_of;
-    std::vector<const Load<dim> *>                   initial_stress_loads;
+    std::map<types::material_id, ElasticModuli<dim>>   moduli_of;
+    std::map<types::material_id, ElasticModuli<dim>>   step_moduli_of;
+    std::map<types::material_id, MaxwellMaterial<dim>> maxwell_of;
+    std::vector<const Load<dim> *>                     initial_stress_loads;
+    const CreepStrain<dim>                            *creep_strain = nullptr;
+    double step_length = 0, step_theta = 1;
   };
 } // namespace lithostress
 

@@ -21,7 +21,9 @@ namespace lithostress
    * Lagrange cells through the degree-p mapping, so curved boundaries and
    * interfaces appear curved. Fields: displacement, stress tensor, σ_zz,
    * principal and deviatoric stresses, the Griffith test, material id and
-   * MPI rank.
+   * MPI rank; in the visco-elastic loop also the creep strain (xx, yy, xy,
+   * zz) and each cell's Maxwell time η/G (0 = elastic), and the `.pvd`
+   * records the model time in seconds.
    */
   template <int dim>
   class SolutionOutput
@@ -32,11 +34,13 @@ namespace lithostress
     void
     parse_parameters(ParameterHandler &prm);
 
-    /** Write the solution (with ghost values) of cycle @p cycle into
-     * @p directory and update the `.pvd` record. */
+    /** Write the solution (with ghost values) as output number @p index
+     * (a cycle or an output time) into @p directory and add it to the
+     * `.pvd` record at time @p time (the cycle, or seconds). */
     void
     write(const std::string                   &directory,
-          const unsigned int                   cycle,
+          const unsigned int                   index,
+          const double                         time,
           const DoFHandler<dim>               &dof_handler,
           const FiniteElementSpace<dim>       &fe_space,
           const StressModel<dim>              &stress_model,
@@ -47,9 +51,12 @@ namespace lithostress
     /** Write only the last cycle. */
     bool last_only = false;
 
-  private:
-    unsigned int                                subdivisions = 0;
+    /** The `.pvd` records (time, file) written so far: part of a
+     * checkpoint, so that a resumed run continues the same series. */
     std::vector<std::pair<double, std::string>> records;
+
+  private:
+    unsigned int subdivisions = 0;
   };
 } // namespace lithostress
 

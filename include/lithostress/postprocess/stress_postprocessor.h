@@ -3,7 +3,9 @@
 
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <deal.II/fe/mapping.h>
 #include <lithostress/materials/material.h>
+
 #include <lithostress/materials/stress_model.h>
 #include <lithostress/postprocess/griffith_failure.h>
 
@@ -64,7 +66,10 @@ namespace lithostress
   class StressPostprocessor : public DataPostprocessor<dim>
   {
   public:
+    /** @p mapping locates the output points in their cells, where a
+     * creep strain is attached to @p stress_model. */
     StressPostprocessor(const StressModel<dim> &stress_model,
+                        const Mapping<dim>     &mapping,
                         const unsigned int      n_fields,
                         const GriffithFailure  &griffith);
 
@@ -84,6 +89,7 @@ namespace lithostress
 
   private:
     const StressModel<dim> &stress_model;
+    const Mapping<dim>     &mapping;
     const unsigned int      n_fields;
     const GriffithFailure  &griffith;
   };

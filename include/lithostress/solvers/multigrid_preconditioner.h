@@ -121,13 +121,14 @@ namespace lithostress
       Timer timer;
     };
 
-    /** The moduli of a (level or active) cell: those of its material. */
+    /** The moduli of a (level or active) cell: the step moduli of its
+     * material (relaxed in a visco-elastic time step). */
     template <int dim>
     auto
     material_moduli(const DiscreteProblem<dim> &problem)
     {
       return [&problem](const auto &cell) {
-        return problem.stress_model.moduli(cell->material_id())
+        return problem.stress_model.step_moduli(cell->material_id())
           .lame_parameters();
       };
     }

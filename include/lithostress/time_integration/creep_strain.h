@@ -2,6 +2,7 @@
 #define lithostress_time_integration_creep_strain_h
 
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -69,6 +70,20 @@ namespace lithostress
     get(const typename Triangulation<dim>::active_cell_iterator &cell,
         std::vector<Vector<double>>                             &values) const;
 
+    /** The creep strain at the unit-cell point @p unit of an owned or
+     * ghost @p cell: the cell's polynomial through its node values. */
+    SymmetricTensor<2, 3>
+    value(const typename Triangulation<dim>::active_cell_iterator &cell,
+          const Point<dim>                                        &unit) const;
+
+    /** The 3-D tensor of the components @p c (xx, yy, xy, zz in 2-D). */
+    static SymmetricTensor<2, 3>
+    tensor(const Vector<double> &c);
+
+    /** The components of @p t (the inverse of tensor()). */
+    static void
+    components(const SymmetricTensor<2, 3> &t, Vector<double> &c);
+
     /** Set the values at the nodes of an owned @p cell. */
     void
     set(const typename Triangulation<dim>::active_cell_iterator &cell,
@@ -114,6 +129,15 @@ namespace lithostress
     values() const
     {
       return field;
+    }
+
+    /** Set the field to @p values (a copy of values() on the same mesh)
+     * and exchange ghosts: the undo of a rejected time step. */
+    void
+    assign(const VectorType &values)
+    {
+      field = values;
+      field.update_ghost_values();
     }
 
   private:

@@ -1,0 +1,175 @@
+#ifndef lithostress_time_integration_creep_integrator_h
+#define lithostress_time_integration_creep_integrator_h
+
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/materials/stress_model.h>
+#include <lithostress/time_integration/creep_strain.h>
+
+#include <functional>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * The update of the creep-strain history at the quadrature points in one
+   * time step (SPEC §3.3, doc/equations.md), for both integrators of
+   * TimeStepping:
+   * - implicit (generalised midpoint, weight θ): before the solve the
+   *   history strain c* = c_n + (1 − θ) Δt s_n/(2η) (begin_step()); the
+   *   solve uses the relaxed moduli and c*; after it
+   *   c_{n+1} = c* + θ Δt s_{n+1}/(2η) with s_{n+1} the deviator of the
+   *   step's stress (finish_implicit_step());
+   * - thesis (§3.9): the elastic moduli with the history strain
+   *   c_n + Δc, where Δc = Δt (s_n + s_{n+1})/(4η) is re-evaluated from
+   *   each new solution (update_thesis_history()) until the stress stops
+   *   changing; then c_{n+1} = c_n + Δc (finish_thesis_step()).
+   * s_n is the deviatoric stress of the start of the step (elastic moduli,
+   * creep strain c_n). Elastic materials keep c = 0.
+   */
+  template <int dim>
+  class CreepIntegrator
+  {
+  public:
+    /**
+     * The size of a step's creep-strain change and its estimated local
+     * error, for the output and the step control. The local error of the
+     * step's creep increment is estimated as (Δt/2) ‖ċ_{n+1} − ċ_n‖, the
+     * difference between the first-order increment and one with the
+     * average rate (doc/equations.md).
+     */
+    struct Increment
+    {
+      /** max ‖c_{n+1} − c_n‖ over the nodes. */
+      double creep_change = 0;
+      /** max (Δt/2) ‖ċ_{n+1} − ċ_n‖ over the nodes. */
+      double local_error = 0;
+      /** max ‖s_{n+1}‖/(2G) over the nodes of Maxwell materials. */
+      double elastic_strain = 0;
+
+      /** local_error relative to @p scale, the largest elastic strain of
+       * the run so far (0 if nothing has been stressed). */
+      double
+      relative_error(const double scale) const
+      {
+        return scale > 0 ? local_error / scale : 0.0;
+      }
+    };
+
+    /** History fields on @p triangulation with the assembly's Gauss
+     * points (@p n_points_1d per direction). */
+    CreepIntegrator(
+      const parallel::distributed::Triangulation<dim> &triangulation,
+      const unsigned int                               n_points_1d);
+
+    /** The creep strain c_n: the history that persists (transferred with
+     * the mesh, written to checkpoints). */
+    CreepStrain<dim> &
+    creep_strain()
+    {
+      return creep;
+    }
+
+    /** The history strain c* the step's assembly uses. */
+    const CreepStrain<dim> &
+    history_strain() const
+    {
+      return history;
+    }
+
+    /** Remember the creep strain c_n at the start of a step. */
+    void
+    keep_start()
+    {
+      start_values = creep.values();
+    }
+
+    /** Back to the creep strain of keep_start() (a rejected step). */
+    void
+    restore_start()
+    {
+      creep.assign(start_values);
+    }
+
+    /** Size the step's work fields for the current mesh (after setup() or
+     * a transfer of the creep strain). */
+    void
+    setup_step_fields();
+
+    /**
+     * Begin a step of length @p dt from the solution @p solution (with the
+     * creep strain c_n): the start rate s_n/(2η) and the history strain c*
+     * of the implicit scheme with weight @p theta, or the thesis scheme's
+     * explicit predictor c_n + Δt s_n/(2η) if @p thesis.
+     */
+    void
+    begin_step(const DoFHandler<dim>               &dof_handler,
+               const FiniteElementSpace<dim>       &fe_space,
+               const StressModel<dim>              &stress_model,
+               const TrilinosWrappers::MPI::Vector &solution,
+               const double                         dt,
+               const double                         theta,
+               const bool                           thesis);
+
+    /** End an implicit step with the new solution: c_{n+1} from the step
+     * stress (the stress model's step moduli must be those of the step). */
+    Increment
+    finish_implicit_step(const DoFHandler<dim>               &dof_handler,
+                         const FiniteElementSpace<dim>       &fe_space,
+                         const StressModel<dim>              &stress_model,
+                         const TrilinosWrappers::MPI::Vector &solution);
+
+    /** One fixed-point update of the thesis scheme from the new solution;
+     * returns the largest change of the deviatoric stress relative to the
+     * largest deviatoric stress. */
+    double
+    update_thesis_history(const DoFHandler<dim>               &dof_handler,
+                          const FiniteElementSpace<dim>       &fe_space,
+                          const StressModel<dim>              &stress_model,
+                          const TrilinosWrappers::MPI::Vector &solution);
+
+    /** End a thesis step: c_{n+1} = c_n + Δc of the last update. */
+    Increment
+    finish_thesis_step(const StressModel<dim> &stress_model);
+
+  private:
+    /**
+     * Call @p visit(cell, points, strains) for every owned cell of a
+     * Maxwell material, with the nodes (quadrature points) and the strain
+     * of @p solution at them.
+     */
+    void
+    for_each_viscous_cell(
+      const DoFHandler<dim>               &dof_handler,
+      const FiniteElementSpace<dim>       &fe_space,
+      const StressModel<dim>              &stress_model,
+      const TrilinosWrappers::MPI::Vector &solution,
+      const std::function<
+        void(const typename Triangulation<dim>::active_cell_iterator &,
+             const std::vector<Point<dim>> &,
+             const std::vector<SymmetricTensor<2, dim>> &)> &visit) const;
+
+    /** The 3-D stress tensor of a stress state. */
+    static SymmetricTensor<2, 3>
+    tensor_3d(const StressState<dim> &s);
+
+    /** Maximum over all ranks of the two parts of @p increment. */
+    Increment
+    all_ranks(const Increment &increment) const;
+
+    /** Exchange the ghost values of the three fields. */
+    void
+    update_ghost_values();
+
+    CreepStrain<dim>                      creep, history, start_rate;
+    typename CreepStrain<dim>::VectorType start_values;
+    /** The step length of begin_step(). */
+    double step = 0;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,280 @@
+#include <deal.II/base/mpi.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/discretization/elastic_assembler.h>
+#include <lithostress/time_integration/creep_integrator.h>
+
+namespace lithostress
+{
+  template <int dim>
+  CreepIntegrator<dim>::CreepIntegrator(
+    const parallel::distributed::Triangulation<dim> &triangulation,
+    const unsigned int                               n_points_1d)
+      : creep(triangulation, n_points_1d)
+      , history(triangulation, n_points_1d)
+      , start_rate(triangulation, n_points_1d)
+  {
+  }
+
+  template <int dim>
+  void
+  CreepIntegrator<dim>::setup_step_fields()
+  {
+    history.setup();
+    start_rate.setup();
+  }
+
+  template <int dim>
+  void
+  CreepIntegrator<dim>::update_ghost_values()
+  {
+    creep.update_ghost_values();
+    history.update_ghost_values();
+    start_rate.update_ghost_values();
+  }
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  CreepIntegrator<dim>::tensor_3d(const StressState<dim> &s)
+  {
+    SymmetricTensor<2, 3> t;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = i; j < dim; ++j)
+        t[i][j] = s.in_plane[i][j];
+    if (dim == 2)
+      t[2][2] = s.zz;
+    return t;
+  }
+
+  template <int dim>
+  void
+  CreepIntegrator<dim>::for_each_viscous_cell(
+    const DoFHandler<dim>               &dof_handler,
+    const FiniteElementSpace<dim>       &fe_space,
+    const StressModel<dim>              &stress_model,
+    const TrilinosWrappers::MPI::Vector &solution,
+    const std::function<
+      void(const typename Triangulation<dim>::active_cell_iterator &,
+           const std::vector<Point<dim>> &,
+           const std::vector<SymmetricTensor<2, dim>> &)> &visit) const
+  {
+    hp::FEValues<dim> hp_fe_values =
+      ElasticAssembler<dim>::cell_values(fe_space);
+    std::vector<Tensor<2, dim>>          gradients;
+    std::vector<SymmetricTensor<2, dim>> strains;
+    // User functions (a temperature change) are evaluated in the stress:
+    // an error on one rank reaches all.
+    on_all_ranks(dof_handler.get_communicator(), [&]() {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            stress_model.maxwell(cell->material_id()).is_viscous())
+          {
+            hp_fe_values.reinit(cell);
+            const FEValues<dim> &fe_values =
+              hp_fe_values.get_present_fe_values();
+            AssertDimension(fe_values.n_quadrature_points,
+                            creep.quadrature().size());
+            const auto u =
+              fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+            gradients.resize(fe_values.n_quadrature_points);
+            fe_values[u].get_function_gradients(solution, gradients);
+            strains.resize(gradients.size());
+            for (unsigned int q = 0; q < gradients.size(); ++q)
+              strains[q] = symmetrize(gradients[q]);
+            visit(cell, fe_values.get_quadrature_points(), strains);
+          }
+    });
+  }
+
+  template <int dim>
+  void
+  CreepIntegrator<dim>::begin_step(
+    const DoFHandler<dim>               &dof_handler,
+    const FiniteElementSpace<dim>       &fe_space,
+    const StressModel<dim>              &stress_model,
+    const TrilinosWrappers::MPI::Vector &solution,
+    const double                         dt,
+    const double                         theta,
+    const bool                           thesis)
+  {
+    step                       = dt;
+    const double history_share = thesis ? 1.0 : 1.0 - theta;
+    history.setup();
+    start_rate.setup();
+    std::vector<Vector<double>> c, rate, h;
+    Vector<double>              value;
+    for_each_viscous_cell(
+      dof_handler,
+      fe_space,
+      stress_model,
+      solution,
+      [&](const auto &cell, const auto &points, const auto &strains) {
+        const MaxwellMaterial<dim> &law =
+          stress_model.maxwell(cell->material_id());
+        creep.get(cell, c);
+        rate.resize(c.size());
+        h.resize(c.size());
+        for (unsigned int q = 0; q < c.size(); ++q)
+          {
+            const SymmetricTensor<2, 3> c_n = CreepStrain<dim>::tensor(c[q]);
+            const SymmetricTensor<2, 3> r =
+              law.creep_rate(tensor_3d(stress_model.stress(
+                cell->material_id(), points[q], strains[q], c_n)));
+            CreepStrain<dim>::components(r, rate[q]);
+            CreepStrain<dim>::components(c_n + history_share * dt * r, h[q]);
+          }
+        start_rate.set(cell, rate);
+        history.set(cell, h);
+      });
+    update_ghost_values();
+  }
+
+  template <int dim>
+  typename CreepIntegrator<dim>::Increment
+  CreepIntegrator<dim>::finish_implicit_step(
+    const DoFHandler<dim>               &dof_handler,
+    const FiniteElementSpace<dim>       &fe_space,
+    const StressModel<dim>              &stress_model,
+    const TrilinosWrappers::MPI::Vector &solution)
+  {
+    const double                theta = stress_model.time_step().second;
+    Increment                   increment;
+    std::vector<Vector<double>> c, h, rate;
+    for_each_viscous_cell(
+      dof_handler,
+      fe_space,
+      stress_model,
+      solution,
+      [&](const auto &cell, const auto &points, const auto &strains) {
+        const types::material_id    id    = cell->material_id();
+        const MaxwellMaterial<dim> &law   = stress_model.maxwell(id);
+        const double                two_g = 2.0 * stress_model.moduli(id).mu;
+        creep.get(cell, c);
+        history.get(cell, h);
+        start_rate.get(cell, rate);
+        for (unsigned int q = 0; q < c.size(); ++q)
+          {
+            const SymmetricTensor<2, 3> c_star = CreepStrain<dim>::tensor(h[q]);
+            const SymmetricTensor<2, 3> sigma  = tensor_3d(
+              stress_model.step_stress(id, points[q], strains[q], c_star));
+            const SymmetricTensor<2, 3> end_rate = law.creep_rate(sigma);
+            const SymmetricTensor<2, 3> c_new =
+              c_star + theta * step * end_rate;
+            increment.creep_change =
+              std::max(increment.creep_change,
+                       (c_new - CreepStrain<dim>::tensor(c[q])).norm());
+            increment.local_error =
+              std::max(increment.local_error,
+                       0.5 * step *
+                         (end_rate - CreepStrain<dim>::tensor(rate[q])).norm());
+            increment.elastic_strain = std::max(increment.elastic_strain,
+                                                deviator(sigma).norm() / two_g);
+            CreepStrain<dim>::components(c_new, c[q]);
+          }
+        creep.set(cell, c);
+      });
+    creep.update_ghost_values();
+    return all_ranks(increment);
+  }
+
+  template <int dim>
+  double
+  CreepIntegrator<dim>::update_thesis_history(
+    const DoFHandler<dim>               &dof_handler,
+    const FiniteElementSpace<dim>       &fe_space,
+    const StressModel<dim>              &stress_model,
+    const TrilinosWrappers::MPI::Vector &solution)
+  {
+    double                      change = 0, largest = 0;
+    std::vector<Vector<double>> c, h, rate;
+    for_each_viscous_cell(
+      dof_handler,
+      fe_space,
+      stress_model,
+      solution,
+      [&](const auto &cell, const auto &points, const auto &strains) {
+        const types::material_id    id  = cell->material_id();
+        const MaxwellMaterial<dim> &law = stress_model.maxwell(id);
+        creep.get(cell, c);
+        history.get(cell, h);
+        start_rate.get(cell, rate);
+        for (unsigned int q = 0; q < c.size(); ++q)
+          {
+            const SymmetricTensor<2, 3> h_old = CreepStrain<dim>::tensor(h[q]);
+            const SymmetricTensor<2, 3> sigma =
+              tensor_3d(stress_model.stress(id, points[q], strains[q], h_old));
+            const SymmetricTensor<2, 3> h_new =
+              CreepStrain<dim>::tensor(c[q]) +
+              0.5 * step *
+                (CreepStrain<dim>::tensor(rate[q]) + law.creep_rate(sigma));
+            // Δs = 4η ΔΔc / Δt: the stress change behind the history's.
+            change =
+              std::max(change,
+                       (h_new - h_old).norm() * 4.0 * law.maxwell_time() *
+                         stress_model.moduli(id).mu / step);
+            largest = std::max(largest, deviator(sigma).norm());
+            CreepStrain<dim>::components(h_new, h[q]);
+          }
+        history.set(cell, h);
+      });
+    history.update_ghost_values();
+    const MPI_Comm comm = dof_handler.get_communicator();
+    change              = Utilities::MPI::max(change, comm);
+    largest             = Utilities::MPI::max(largest, comm);
+    return largest > 0 ? change / largest : 0.0;
+  }
+
+  template <int dim>
+  typename CreepIntegrator<dim>::Increment
+  CreepIntegrator<dim>::finish_thesis_step(const StressModel<dim> &stress_model)
+  {
+    Increment                   increment;
+    std::vector<Vector<double>> c, h, rate;
+    const auto                 &tria = creep.dof_handler().get_triangulation();
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          stress_model.maxwell(cell->material_id()).is_viscous())
+        {
+          creep.get(cell, c);
+          history.get(cell, h);
+          start_rate.get(cell, rate);
+          const double tau =
+            stress_model.maxwell(cell->material_id()).maxwell_time();
+          for (unsigned int q = 0; q < c.size(); ++q)
+            {
+              const SymmetricTensor<2, 3> c_new =
+                CreepStrain<dim>::tensor(h[q]);
+              increment.creep_change =
+                std::max(increment.creep_change,
+                         (c_new - CreepStrain<dim>::tensor(c[q])).norm());
+              // s_{n+1}/(2G) = τ × (end-of-step rate) = τ (2 Δc/Δt − rate_n).
+              const SymmetricTensor<2, 3> end_rate =
+                2.0 / step * (c_new - CreepStrain<dim>::tensor(c[q])) -
+                CreepStrain<dim>::tensor(rate[q]);
+              increment.elastic_strain =
+                std::max(increment.elastic_strain, tau * end_rate.norm());
+              increment.local_error = std::max(
+                increment.local_error,
+                0.5 * step *
+                  (end_rate - CreepStrain<dim>::tensor(rate[q])).norm());
+            }
+          creep.set(cell, h);
+        }
+    creep.update_ghost_values();
+    return all_ranks(increment);
+  }
+
+  template <int dim>
+  typename CreepIntegrator<dim>::Increment
+  CreepIntegrator<dim>::all_ranks(const Increment &increment) const
+  {
+    const MPI_Comm comm = creep.dof_handler().get_communicator();
+    Increment      result;
+    result.creep_change   = Utilities::MPI::max(increment.creep_change, comm);
+    result.elastic_strain = Utilities::MPI::max(increment.elastic_strain, comm);
+    result.local_error    = Utilities::MPI::max(increment.local_error, comm);
+    return result;
+  }
+
+  template class CreepIntegrator<2>;
+} // namespace lithostress

@@ -1,0 +1,320 @@
+#include <lithostress/base/input_error.h>
+#include <lithostress/output/output_file.h>
+#include <lithostress/postprocess/point_values.h>
+#include <lithostress/time_integration/viscoelastic_time_loop.h>
+
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace lithostress
+{
+  template <int dim>
+  ViscoelasticTimeLoop<dim>::ViscoelasticTimeLoop(Simulator<dim> &simulator)
+      : sim(simulator)
+      , settings(simulator.time_stepping)
+      , wall_clock(simulator.communicator, true)
+  {
+  }
+
+  template <int dim>
+  unsigned int
+  ViscoelasticTimeLoop<dim>::solve_system(const bool new_mesh)
+  {
+    if (new_mesh)
+      sim.setup_dofs();
+    else
+      {
+        // The same mesh: new prescribed values at the new time (the
+        // structure of the constraints, and so the matrix's, is the same);
+        // the solver released the right-hand side.
+        TimerOutput::Scope t(*sim.timer, "setup");
+        sim.make_constraints();
+        sim.system.rhs.reinit(sim.system.locally_owned, sim.communicator);
+      }
+    sim.stop_if_requested("assembly");
+    sim.assemble_system();
+    sim.stop_if_requested("solve");
+    sim.solve();
+    ++linear_solves;
+    return sim.statistics.solver.iterations;
+  }
+
+  template <int dim>
+  bool
+  ViscoelasticTimeLoop<dim>::attempt_step(const double t_new,
+                                          StepRecord  &record)
+  {
+    CreepIntegrator<dim> &creep = *sim.creep;
+    StressModel<dim>     &model = *sim.stress_model;
+    const double          h     = t_new - t;
+    const bool thesis = settings.scheme == TimeStepping::Scheme::thesis;
+    creep.keep_start();
+    start_solution = sim.solution;
+    creep.begin_step(sim.dof_handler,
+                     *sim.fe_space,
+                     model,
+                     sim.solution,
+                     h,
+                     settings.theta,
+                     thesis);
+    sim.time           = t_new;
+    sim.history_strain = &creep.history_strain();
+    typename CreepIntegrator<dim>::Increment increment;
+    if (!thesis)
+      {
+        model.set_time_step(h, settings.theta);
+        record.linear_iterations += solve_system(false);
+        record.nonlinear_iterations = 1;
+        increment = creep.finish_implicit_step(sim.dof_handler,
+                                               *sim.fe_space,
+                                               model,
+                                               sim.solution);
+      }
+    else
+      {
+        model.set_time_step(0, settings.theta);
+        double change = std::numeric_limits<double>::infinity();
+        for (record.nonlinear_iterations = 1;; ++record.nonlinear_iterations)
+          {
+            record.linear_iterations += solve_system(false);
+            change = creep.update_thesis_history(sim.dof_handler,
+                                                 *sim.fe_space,
+                                                 model,
+                                                 sim.solution);
+            if (change <= settings.fixed_point_tolerance)
+              break;
+            if (record.nonlinear_iterations >=
+                settings.fixed_point_max_iterations)
+              {
+                std::ostringstream message;
+                message << "the thesis scheme's fixed-point iteration of the "
+                           "step from t = "
+                        << settings.format(t) << " to "
+                        << settings.format(t_new) << " did not converge in "
+                        << settings.fixed_point_max_iterations
+                        << " iterations (relative stress change "
+                        << std::setprecision(3) << change << " > "
+                        << settings.fixed_point_tolerance
+                        << "); shorten the step (Time stepping/Creep strain "
+                           "tolerance or Maximum time step) or use Scheme = "
+                           "implicit. The results up to t = "
+                        << settings.format(t) << " are complete.";
+                throw ComputationError(message.str());
+              }
+          }
+        increment = creep.finish_thesis_step(model);
+      }
+    sim.history_strain     = nullptr;
+    record.creep_increment = increment.creep_change;
+    // Relative to the largest elastic strain of the run: errors of a
+    // relaxing stress are measured against its initial size, so that the
+    // steps grow as the relaxation ends.
+    const double scale    = std::max(strain_scale, increment.elastic_strain);
+    record.error_estimate = increment.relative_error(scale);
+    if (settings.adaptive && record.error_estimate > settings.tolerance)
+      {
+        // Undo: the creep strain and solution of the start of the step.
+        creep.restore_start();
+        sim.solution = start_solution;
+        sim.time     = t;
+        return false;
+      }
+    strain_scale = scale;
+    return true;
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::refine_mesh()
+  {
+    CreepIntegrator<dim> &creep = *sim.creep;
+    sim.refine_mesh("the mesh of step " + std::to_string(step),
+                    [&]() { creep.creep_strain().prepare_for_mesh_change(); });
+    creep.creep_strain().finish_mesh_change();
+    creep.setup_step_fields();
+    // Equilibrium on the new mesh for the transferred creep strain at the
+    // current time: the elastic moduli with the creep strain as initial
+    // strain.
+    sim.stress_model->set_time_step(0, settings.theta);
+    sim.history_strain = &creep.creep_strain();
+    solve_system(true);
+    sim.history_strain = nullptr;
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::write_output(const unsigned int index)
+  {
+    TimerOutput::Scope timer(*sim.timer, "output");
+    sim.solution_output.write(sim.output_directory,
+                              index,
+                              t,
+                              sim.dof_handler,
+                              *sim.fe_space,
+                              *sim.stress_model,
+                              sim.griffith,
+                              sim.solution);
+    if (sim.points.empty())
+      return;
+    const auto values = evaluate_at_points(sim.dof_handler,
+                                           *sim.fe_space,
+                                           *sim.stress_model,
+                                           sim.solution,
+                                           sim.points);
+    for (unsigned int k = 0; k < values.size(); ++k)
+      {
+        std::ostringstream row;
+        row << std::setprecision(10) << t << ',' << k + 1 << ','
+            << values[k].point[0] << ',' << values[k].point[1] << ','
+            << values[k].displacement[0] << ',' << values[k].displacement[1]
+            << ',' << values[k].stress[0][0] << ',' << values[k].stress[1][1]
+            << ',' << values[k].stress[0][1] << ',' << values[k].sigma_zz;
+        point_history.push_back(row.str());
+      }
+    on_all_ranks(sim.communicator, [&]() {
+      if (Utilities::MPI::this_mpi_process(sim.communicator) != 0)
+        return;
+      OutputFile csv(sim.output_directory + "/point_history.csv");
+      csv << "time,point,x,y,u_x,u_y,s_xx,s_yy,s_xy,s_zz\n";
+      for (const std::string &row : point_history)
+        csv << row << '\n';
+      csv.commit();
+    });
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::write_time_steps() const
+  {
+    on_all_ranks(sim.communicator, [&]() {
+      if (Utilities::MPI::this_mpi_process(sim.communicator) != 0)
+        return;
+      OutputFile csv(sim.output_directory + "/time_steps.csv");
+      csv << "step,time,dt,dofs,cells,linear_iterations,nonlinear_iterations,"
+             "rejected_steps,creep_strain_increment,error_estimate,"
+             "wall_time\n";
+      for (const StepRecord &r : steps)
+        csv << r.step << ',' << std::setprecision(12) << r.time << ',' << r.dt
+            << ',' << r.dofs << ',' << r.cells << ',' << r.linear_iterations
+            << ',' << r.nonlinear_iterations << ',' << r.rejected << ','
+            << std::setprecision(6) << r.creep_increment << ','
+            << r.error_estimate << ',' << r.wall_time << '\n';
+      csv.commit();
+    });
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::report_step(const StepRecord &r)
+  {
+    std::ostringstream line;
+    line << "step " << r.step << ": t = " << settings.format(r.time)
+         << ", dt = " << settings.format(r.dt) << ", " << r.dofs << " DoFs, "
+         << sim.statistics.solver.solver << ' ' << r.linear_iterations << " it";
+    if (settings.scheme == TimeStepping::Scheme::thesis)
+      line << " in " << r.nonlinear_iterations << " fixed-point iterations";
+    line << ", creep increment " << std::setprecision(3) << r.creep_increment
+         << ", error estimate " << r.error_estimate;
+    if (r.rejected > 0)
+      line << " (" << r.rejected << " rejected)";
+    sim.log << line.str() << std::endl;
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::run()
+  {
+    sim.write_run_header();
+    StressModel<dim>     &model = *sim.stress_model;
+    CreepIntegrator<dim> &creep = *sim.creep;
+    sim.log << "Visco-elastic time loop to "
+            << settings.format(settings.end_time) << " (" << settings.end_time
+            << " s; every output time in s), "
+            << (settings.scheme == TimeStepping::Scheme::thesis
+                  ? std::string("thesis initial-strain scheme")
+                  : "implicit scheme, theta = " +
+                      std::to_string(settings.theta))
+            << '\n';
+
+    // The elastic response at t = 0 on the mesh of the refinement cycles.
+    sim.time = 0;
+    model.set_time_step(0, settings.theta);
+    for (sim.cycle = 0; sim.cycle < sim.refinement.n_cycles; ++sim.cycle)
+      {
+        if (sim.cycle > 0)
+          sim.refine_mesh("the mesh of cycle " + std::to_string(sim.cycle));
+        sim.compute_cycle();
+      }
+    --sim.cycle;
+    ++linear_solves;
+    creep.creep_strain().setup();
+    creep.setup_step_fields();
+    model.attach_creep_strain(&creep.creep_strain());
+    if (settings.output_at_zero)
+      write_output(0);
+
+    double shortest_maxwell_time = std::numeric_limits<double>::infinity();
+    for (const Material &m : sim.materials.materials())
+      if (model.maxwell(m.id).is_viscous())
+        shortest_maxwell_time =
+          std::min(shortest_maxwell_time, model.maxwell(m.id).maxwell_time());
+    dt = settings.first_step > 0
+           ? settings.first_step
+           : (std::isfinite(shortest_maxwell_time)
+                ? std::sqrt(2 * settings.tolerance) * shortest_maxwell_time
+                : settings.end_time / 100);
+
+    while (t < settings.end_time)
+      {
+        StepRecord record;
+        Timer      clock(sim.communicator, true);
+        double     t_new = settings.next_time(t, dt);
+        while (!attempt_step(t_new, record))
+          {
+            ++record.rejected;
+            // The estimate grows as Δt²: aim at half the tolerance.
+            const double h = t_new - t;
+            dt             = h * std::max(0.1,
+                              std::sqrt(0.5 * settings.tolerance /
+                                        record.error_estimate));
+            if (dt < settings.minimum_step)
+              throw ComputationError(
+                "the time step from t = " + settings.format(t) +
+                " would have to be shorter than the Minimum time step (" +
+                settings.format(settings.minimum_step) +
+                ") to keep the creep-strain increment below the tolerance");
+            t_new = settings.next_time(t, dt);
+          }
+        record.dt    = t_new - t;
+        t            = t_new;
+        record.time  = t;
+        record.step  = ++step;
+        record.dofs  = sim.dof_handler.n_dofs();
+        record.cells = sim.triangulation.n_global_active_cells();
+        // Double the step while the estimate (∝ Δt²) stays below a quarter
+        // of the tolerance; otherwise keep it, so that the solver's set-up
+        // for the step stays valid.
+        if (settings.adaptive &&
+            record.error_estimate < 0.25 * settings.tolerance &&
+            record.dt >= 0.99 * dt)
+          dt *= 2;
+        const int output = settings.output_index(t);
+        if (output >= 0)
+          write_output(output);
+        record.wall_time = clock.wall_time();
+        steps.push_back(record);
+        write_time_steps();
+        report_step(record);
+        if (settings.refinement_interval > 0 &&
+            step % settings.refinement_interval == 0 && t < settings.end_time)
+          refine_mesh();
+      }
+    sim.log << "Time loop: " << step << " steps, " << linear_solves
+            << " linear solves, " << std::setprecision(4)
+            << wall_clock.wall_time() << " s\n";
+    sim.write_final_results();
+  }
+
+  template class ViscoelasticTimeLoop<2>;
+} // namespace lithostress
