@@ -354,6 +354,7 @@ namespace lithostress
     make_constraints();
     phase_done("constraints");
     system.reinit(dof_handler, communicator, linear_solver->needs_matrix());
+    ++mesh_version;
     phase_done("sparsity pattern and matrix");
     // The previous mesh's solution; solve() sizes it anew.
     solution.clear();
@@ -392,7 +393,13 @@ namespace lithostress
       load->set_time(time);
     ElasticAssembler<dim> assembler(*fe_space, *stress_model, loads);
     assembler.set_history_strain(history_strain);
-    assembler.assemble(dof_handler, system, linear_solver->needs_matrix());
+    // The matrix only where the operator changed (the time loop assembles
+    // many right-hand sides for one operator).
+    const bool with_matrix =
+      linear_solver->needs_matrix() && matrix_version != operator_version();
+    assembler.assemble(dof_handler, system, with_matrix);
+    if (with_matrix)
+      matrix_version = operator_version();
     statistics.assemble_time = clock.wall_time();
   }
 
@@ -411,7 +418,9 @@ namespace lithostress
                                        system,
                                        *stress_model,
                                        loads,
-                                       prescribed_displacement};
+                                       prescribed_displacement,
+                                       keep_solver_setup,
+                                       operator_version()};
     statistics.solver = linear_solver->solve(problem, owned_solution);
     system.constraints.distribute(owned_solution);
     const double norm = owned_solution.l2_norm();

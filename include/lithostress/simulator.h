@@ -184,6 +184,18 @@ namespace lithostress
      * history only if the loop runs). */
     TimeStepping                          time_stepping;
     std::unique_ptr<CreepIntegrator<dim>> creep;
+    /** Counts the meshes set up (setup_dofs()). */
+    unsigned long long mesh_version = 0;
+    /** The operator version the assembled matrix belongs to. */
+    unsigned long long matrix_version = ~0ULL;
+    /** Whether solvers keep their set-up between solves (time loop). */
+    bool keep_solver_setup = false;
+    /** The version of the operator: mesh and step moduli. */
+    unsigned long long
+    operator_version() const
+    {
+      return (mesh_version << 32) + stress_model->moduli_version();
+    }
     /** The history strain of the time step being assembled, or nullptr. */
     const CreepStrain<dim> *history_strain = nullptr;
 

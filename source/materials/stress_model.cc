@@ -116,6 +116,9 @@ namespace lithostress
   void
   StressModel<dim>::set_time_step(const double dt, const double theta)
   {
+    if (dt == step_length && theta == step_theta)
+      return;
+    ++version;
     step_length = dt;
     step_theta  = theta;
     step_moduli_of.clear();

@@ -28,14 +28,24 @@ namespace lithostress
     report.solver = "amg";
     Timer timer(dof_handler.get_communicator(), true);
 
-    const Epetra_CrsMatrix &matrix = system.matrix.trilinos_matrix();
-    std::unique_ptr<Epetra_MultiVector> modes =
-      make_rigid_body_modes(dof_handler, problem.fe_space, matrix.DomainMap());
-
-    TrilinosWrappers::PreconditionAMG preconditioner;
-    initialize_elasticity_amg<dim>(
-      preconditioner, system.matrix, *modes, settings, true);
-    report.setup_time = timer.wall_time();
+    const bool reuse = problem.keep_setup && kept_amg &&
+                       kept_version == problem.operator_version;
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> amg =
+      reuse ? std::move(kept_amg)
+            : std::make_unique<TrilinosWrappers::PreconditionAMG>();
+    kept_amg.reset();
+    if (!reuse)
+      {
+        const Epetra_CrsMatrix &matrix = system.matrix.trilinos_matrix();
+        std::unique_ptr<Epetra_MultiVector> modes =
+          make_rigid_body_modes(dof_handler,
+                                problem.fe_space,
+                                matrix.DomainMap());
+        initialize_elasticity_amg<dim>(
+          *amg, system.matrix, *modes, settings, true);
+      }
+    const TrilinosWrappers::PreconditionAMG &preconditioner = *amg;
+    report.setup_time                                       = timer.wall_time();
 
     timer.restart();
     solution.reinit(system.locally_owned, dof_handler.get_communicator());
@@ -68,6 +78,11 @@ namespace lithostress
     report.iterations     = iterations_of(control);
     report.final_residual = rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
     report.solve_time     = timer.wall_time();
+    if (problem.keep_setup)
+      {
+        kept_amg     = std::move(amg);
+        kept_version = problem.operator_version;
+      }
     if (settings.time_matrix_vector_product)
       {
         // The machine's speed in the operation that bounds CG + AMG, to

@@ -179,6 +179,14 @@ namespace lithostress
       solve(const DiscreteProblem<dim>    &problem,
             TrilinosWrappers::MPI::Vector &solution,
             const Settings                &settings) override;
+
+    private:
+      /** The set-up kept for the next solve (DiscreteProblem::keep_setup)
+       * and the operator version it was made for. */
+      std::unique_ptr<SystemOperator> kept_operator;
+      std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
+                         kept_preconditioner;
+      unsigned long long kept_version = 0;
     };
 
     template <int dim, int degree, typename number>
@@ -198,22 +206,35 @@ namespace lithostress
       report.solver = "mf-gmg";
       Timer timer(communicator, true), total(communicator, true);
 
+      std::unique_ptr<SystemOperator> system_operator;
+      std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
+                 preconditioner;
+      const bool reuse = problem.keep_setup && kept_operator &&
+                         kept_version == problem.operator_version;
+      if (reuse)
+        {
+          system_operator = std::move(kept_operator);
+          preconditioner  = std::move(kept_preconditioner);
+        }
+      kept_operator.reset();
+      kept_preconditioner.reset();
       // The operator on the active mesh (double precision).
-      auto system_operator = std::make_unique<SystemOperator>();
-      {
-        typename MatrixFree<dim, double>::AdditionalData data;
-        multigrid_tools::set_operator_flags(data, springs);
-        auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
-        matrix_free->reinit(problem.fe_space.mapping(),
-                            dof_handler,
-                            problem.system.constraints,
-                            QGauss<1>(degree + 1),
-                            data);
-        system_operator->initialize(matrix_free);
-        system_operator->set_cell_moduli(
-          multigrid_tools::material_moduli(problem));
-        system_operator->set_vertical_springs(springs);
-      }
+      if (!reuse)
+        {
+          system_operator = std::make_unique<SystemOperator>();
+          typename MatrixFree<dim, double>::AdditionalData data;
+          multigrid_tools::set_operator_flags(data, springs);
+          auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
+          matrix_free->reinit(problem.fe_space.mapping(),
+                              dof_handler,
+                              problem.system.constraints,
+                              QGauss<1>(degree + 1),
+                              data);
+          system_operator->initialize(matrix_free);
+          system_operator->set_cell_moduli(
+            multigrid_tools::material_moduli(problem));
+          system_operator->set_vertical_springs(springs);
+        }
       report.phases.emplace_back("matrix-free set-up (active mesh)",
                                  timer.wall_time());
 
@@ -225,7 +246,7 @@ namespace lithostress
       copy_owned_entries(problem.system.locally_owned, problem.system.rhs, rhs);
       problem.system.rhs.clear();
 
-      std::unique_ptr<MultigridPreconditioner<dim, degree, number>>
+      if (!reuse)
         preconditioner =
           settings.global_coarsening
             ? make_global_coarsening_preconditioner<dim, degree, number>(
@@ -233,6 +254,8 @@ namespace lithostress
             : make_local_smoothing_preconditioner<dim, degree, number>(problem,
                                                                        settings,
                                                                        report);
+      else
+        report.phases.emplace_back("set-up reused", 0.0);
       report.setup_time = total.wall_time();
 
       timer.restart();
@@ -287,9 +310,16 @@ namespace lithostress
           report.benchmark_time = benchmark.wall_time();
         }
 
-      // Release the hierarchy, the operator and the vectors CG and the
+      // Keep the set-up for the next solve of the same operator, or
+      // release the hierarchy, the operator and the vectors CG and the
       // V-cycle left in deal.II's pools before the Trilinos solution is
       // made: it does not add to the solve's peak memory.
+      if (problem.keep_setup)
+        {
+          kept_operator       = std::move(system_operator);
+          kept_preconditioner = std::move(preconditioner);
+          kept_version        = problem.operator_version;
+        }
       preconditioner.reset();
       system_operator.reset();
       rhs.reinit(0);

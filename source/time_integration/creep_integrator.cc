@@ -13,6 +13,7 @@ namespace lithostress
       : creep(triangulation, n_points_1d)
       , history(triangulation, n_points_1d)
       , start_rate(triangulation, n_points_1d)
+      , end_rate(triangulation, n_points_1d)
   {
   }
 
@@ -22,15 +23,8 @@ namespace lithostress
   {
     history.setup();
     start_rate.setup();
-  }
-
-  template <int dim>
-  void
-  CreepIntegrator<dim>::update_ghost_values()
-  {
-    creep.update_ghost_values();
-    history.update_ghost_values();
-    start_rate.update_ghost_values();
+    end_rate.setup();
+    start_rate_current = false;
   }
 
   template <int dim>
@@ -97,36 +91,34 @@ namespace lithostress
     const double                         theta,
     const bool                           thesis)
   {
-    step                       = dt;
-    const double history_share = thesis ? 1.0 : 1.0 - theta;
-    history.setup();
-    start_rate.setup();
-    std::vector<Vector<double>> c, rate, h;
-    Vector<double>              value;
-    for_each_viscous_cell(
-      dof_handler,
-      fe_space,
-      stress_model,
-      solution,
-      [&](const auto &cell, const auto &points, const auto &strains) {
-        const MaxwellMaterial<dim> &law =
-          stress_model.maxwell(cell->material_id());
-        creep.get(cell, c);
-        rate.resize(c.size());
-        h.resize(c.size());
-        for (unsigned int q = 0; q < c.size(); ++q)
-          {
-            const SymmetricTensor<2, 3> c_n = CreepStrain<dim>::tensor(c[q]);
-            const SymmetricTensor<2, 3> r =
-              law.creep_rate(tensor_3d(stress_model.stress(
-                cell->material_id(), points[q], strains[q], c_n)));
-            CreepStrain<dim>::components(r, rate[q]);
-            CreepStrain<dim>::components(c_n + history_share * dt * r, h[q]);
-          }
-        start_rate.set(cell, rate);
-        history.set(cell, h);
-      });
-    update_ghost_values();
+    step = dt;
+    // The rate s_n/(2η) of the start of the step: the end rate of the last
+    // step, unless the mesh or the solution changed since.
+    if (!start_rate_current)
+      {
+        std::vector<Vector<double>> c, rate;
+        for_each_viscous_cell(
+          dof_handler,
+          fe_space,
+          stress_model,
+          solution,
+          [&](const auto &cell, const auto &points, const auto &strains) {
+            const types::material_id    id  = cell->material_id();
+            const MaxwellMaterial<dim> &law = stress_model.maxwell(id);
+            creep.get(cell, c);
+            rate.resize(c.size());
+            for (unsigned int q = 0; q < c.size(); ++q)
+              CreepStrain<dim>::components(
+                law.creep_rate(tensor_3d(stress_model.stress(
+                  id, points[q], strains[q], CreepStrain<dim>::tensor(c[q])))),
+                rate[q]);
+            start_rate.set(cell, rate);
+          });
+        start_rate.update_ghost_values();
+        start_rate_current = true;
+      }
+    // c* = c_n + (1 − θ) Δt ċ_n, or the thesis's predictor c_n + Δt ċ_n.
+    history.set_to_sum(creep, (thesis ? 1.0 : 1.0 - theta) * dt, start_rate);
   }
 
   template <int dim>
@@ -157,23 +149,26 @@ namespace lithostress
             const SymmetricTensor<2, 3> c_star = CreepStrain<dim>::tensor(h[q]);
             const SymmetricTensor<2, 3> sigma  = tensor_3d(
               stress_model.step_stress(id, points[q], strains[q], c_star));
-            const SymmetricTensor<2, 3> end_rate = law.creep_rate(sigma);
+            const SymmetricTensor<2, 3> rate_end = law.creep_rate(sigma);
             const SymmetricTensor<2, 3> c_new =
-              c_star + theta * step * end_rate;
+              c_star + theta * step * rate_end;
             increment.creep_change =
               std::max(increment.creep_change,
                        (c_new - CreepStrain<dim>::tensor(c[q])).norm());
             increment.local_error =
               std::max(increment.local_error,
                        0.5 * step *
-                         (end_rate - CreepStrain<dim>::tensor(rate[q])).norm());
+                         (rate_end - CreepStrain<dim>::tensor(rate[q])).norm());
             increment.elastic_strain = std::max(increment.elastic_strain,
                                                 deviator(sigma).norm() / two_g);
             CreepStrain<dim>::components(c_new, c[q]);
+            CreepStrain<dim>::components(rate_end, rate[q]);
           }
         creep.set(cell, c);
+        end_rate.set(cell, rate);
       });
     creep.update_ghost_values();
+    end_rate.update_ghost_values();
     return all_ranks(increment);
   }
 
@@ -248,19 +243,22 @@ namespace lithostress
                 std::max(increment.creep_change,
                          (c_new - CreepStrain<dim>::tensor(c[q])).norm());
               // s_{n+1}/(2G) = τ × (end-of-step rate) = τ (2 Δc/Δt − rate_n).
-              const SymmetricTensor<2, 3> end_rate =
+              const SymmetricTensor<2, 3> rate_end =
                 2.0 / step * (c_new - CreepStrain<dim>::tensor(c[q])) -
                 CreepStrain<dim>::tensor(rate[q]);
               increment.elastic_strain =
-                std::max(increment.elastic_strain, tau * end_rate.norm());
+                std::max(increment.elastic_strain, tau * rate_end.norm());
               increment.local_error = std::max(
                 increment.local_error,
                 0.5 * step *
-                  (end_rate - CreepStrain<dim>::tensor(rate[q])).norm());
+                  (rate_end - CreepStrain<dim>::tensor(rate[q])).norm());
+              CreepStrain<dim>::components(rate_end, rate[q]);
             }
           creep.set(cell, h);
+          end_rate.set(cell, rate);
         }
     creep.update_ghost_values();
+    end_rate.update_ghost_values();
     return all_ranks(increment);
   }
 

@@ -49,15 +49,18 @@ namespace lithostress
     StressModel<dim>     &model = *sim.stress_model;
     const double          h     = t_new - t;
     const bool thesis = settings.scheme == TimeStepping::Scheme::thesis;
-    creep.keep_start();
-    start_solution = sim.solution;
-    creep.begin_step(sim.dof_handler,
-                     *sim.fe_space,
-                     model,
-                     sim.solution,
-                     h,
-                     settings.theta,
-                     thesis);
+    {
+      TimerOutput::Scope timer(*sim.timer, "creep update");
+      creep.keep_start();
+      start_solution = sim.solution;
+      creep.begin_step(sim.dof_handler,
+                       *sim.fe_space,
+                       model,
+                       sim.solution,
+                       h,
+                       settings.theta,
+                       thesis);
+    }
     sim.time           = t_new;
     sim.history_strain = &creep.history_strain();
     typename CreepIntegrator<dim>::Increment increment;
@@ -66,6 +69,7 @@ namespace lithostress
         model.set_time_step(h, settings.theta);
         record.linear_iterations += solve_system(false);
         record.nonlinear_iterations = 1;
+        TimerOutput::Scope timer(*sim.timer, "creep update");
         increment = creep.finish_implicit_step(sim.dof_handler,
                                                *sim.fe_space,
                                                model,
@@ -78,6 +82,7 @@ namespace lithostress
         for (record.nonlinear_iterations = 1;; ++record.nonlinear_iterations)
           {
             record.linear_iterations += solve_system(false);
+            TimerOutput::Scope timer(*sim.timer, "creep update");
             change = creep.update_thesis_history(sim.dof_handler,
                                                  *sim.fe_space,
                                                  model,
@@ -121,6 +126,7 @@ namespace lithostress
         return false;
       }
     strain_scale = scale;
+    creep.accept_step();
     return true;
   }
 
@@ -248,6 +254,7 @@ namespace lithostress
       }
     --sim.cycle;
     ++linear_solves;
+    sim.keep_solver_setup = true;
     creep.creep_strain().setup();
     creep.setup_step_fields();
     model.attach_creep_strain(&creep.creep_strain());

@@ -114,6 +114,13 @@ namespace lithostress
     void
     set_time_step(const double dt, const double theta);
 
+    /** Changes whenever set_time_step() changes the step moduli. */
+    unsigned long long
+    moduli_version() const
+    {
+      return version;
+    }
+
     /** The step length and weight set last. */
     std::pair<double, double>
     time_step() const
@@ -152,7 +159,8 @@ namespace lithostress
     std::map<types::material_id, MaxwellMaterial<dim>> maxwell_of;
     std::vector<const Load<dim> *>                     initial_stress_loads;
     const CreepStrain<dim>                            *creep_strain = nullptr;
-    double step_length = 0, step_theta = 1;
+    double             step_length = 0, step_theta = 1;
+    unsigned long long version = 0;
   };
 } // namespace lithostress
 

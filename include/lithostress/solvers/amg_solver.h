@@ -54,6 +54,10 @@ namespace lithostress
 
   private:
     Settings settings;
+    /** The AMG kept for the next solve (DiscreteProblem::keep_setup) and
+     * the operator version it was made for. */
+    std::unique_ptr<TrilinosWrappers::PreconditionAMG> kept_amg;
+    unsigned long long                                 kept_version = 0;
   };
 
   /**

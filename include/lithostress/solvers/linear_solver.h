@@ -120,6 +120,17 @@ namespace lithostress
     const StressModel<dim>            &stress_model;
     const LoadCollection<dim>         &loads;
     const PrescribedDisplacement<dim> &prescribed_displacement;
+    /**
+     * Whether the solver may keep its set-up (operators, hierarchy,
+     * smoothers, AMG) after the solve, for the next solve of the same
+     * operator: the visco-elastic loop solves many right-hand sides on one
+     * mesh with one step size. Elastic cycles release it, so that it does
+     * not count in the peak memory of the next mesh.
+     */
+    bool keep_setup = false;
+    /** Changes whenever the operator does (a new mesh, other moduli): a
+     * kept set-up of another version is rebuilt. */
+    unsigned long long operator_version = 0;
   };
 
   /**

@@ -96,7 +96,7 @@ namespace lithostress
     }
 
     /** Size the step's work fields for the current mesh (after setup() or
-     * a transfer of the creep strain). */
+     * a transfer of the creep strain): the start rate is computed anew. */
     void
     setup_step_fields();
 
@@ -136,6 +136,15 @@ namespace lithostress
     Increment
     finish_thesis_step(const StressModel<dim> &stress_model);
 
+    /** The step is accepted: its end rate is the next step's start rate
+     * (the same state), which is then not computed again. */
+    void
+    accept_step()
+    {
+      start_rate.swap_values(end_rate);
+      start_rate_current = true;
+    }
+
   private:
     /**
      * Call @p visit(cell, points, strains) for every owned cell of a
@@ -161,11 +170,11 @@ namespace lithostress
     Increment
     all_ranks(const Increment &increment) const;
 
-    /** Exchange the ghost values of the three fields. */
-    void
-    update_ghost_values();
 
-    CreepStrain<dim>                      creep, history, start_rate;
+    CreepStrain<dim> creep, history, start_rate, end_rate;
+    /** Whether start_rate belongs to the current creep strain and
+     * solution (false after a mesh change). */
+    bool                                  start_rate_current = false;
     typename CreepStrain<dim>::VectorType start_values;
     /** The step length of begin_step(). */
     double step = 0;

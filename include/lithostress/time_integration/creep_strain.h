@@ -131,6 +131,25 @@ namespace lithostress
       return field;
     }
 
+    /** This field := @p a + @p factor × @p b (fields on the same mesh),
+     * ghosts exchanged. */
+    void
+    set_to_sum(const CreepStrain<dim> &a,
+               const double            factor,
+               const CreepStrain<dim> &b)
+    {
+      field = a.field;
+      field.add(factor, b.field);
+      field.update_ghost_values();
+    }
+
+    /** Exchange the values with @p other (a field on the same mesh). */
+    void
+    swap_values(CreepStrain<dim> &other)
+    {
+      field.swap(other.field);
+    }
+
     /** Set the field to @p values (a copy of values() on the same mesh)
      * and exchange ghosts: the undo of a rejected time step. */
     void
