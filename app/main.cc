@@ -25,7 +25,8 @@ namespace
          "Trilinos).\n"
          "\n"
          "Usage:\n"
-         "  lithostress model.prm [--set 'Section/Entry=value' ...]\n"
+         "  lithostress model.prm [--set 'Section/Entry=value' ...] "
+         "[--resume]\n"
          "  mpirun -np N lithostress model.prm\n"
          "  lithostress --print-parameters        every parameter, with its\n"
          "                                        documentation, default and\n"
@@ -76,6 +77,11 @@ main(int argc, char *argv[])
                                    ? ParameterHandler::PRM
                                    : ParameterHandler::JSON);
           return 0;
+        }
+      if (a == "--resume")
+        {
+          overrides.push_back("Time stepping/Resume=true");
+          continue;
         }
       if (a == "--set")
         {

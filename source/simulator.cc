@@ -16,6 +16,7 @@
 #include <lithostress/postprocess/surface_profile.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
 #include <lithostress/simulator.h>
+#include <lithostress/time_integration/checkpoint.h>
 #include <lithostress/time_integration/viscoelastic_time_loop.h>
 
 #include <sys/resource.h>
@@ -232,6 +233,8 @@ namespace lithostress
 
     refinement.parse_parameters(prm);
     time_stepping.parse_parameters(prm);
+    if (time_stepping.enabled && time_stepping.resume)
+      Checkpoint::check_resumable(output_directory, prm, communicator);
     if (time_stepping.enabled)
       creep = std::make_unique<CreepIntegrator<dim>>(triangulation,
                                                      fe_space->degree() + 1);
@@ -579,7 +582,7 @@ namespace lithostress
 
   template <int dim>
   void
-  Simulator<dim>::write_run_header()
+  Simulator<dim>::write_run_header(const bool refine_initially)
   {
     log << "lithostress: " << Utilities::MPI::n_mpi_processes(communicator)
         << " MPI rank(s), output in " << output_directory << "/" << std::endl;
@@ -601,7 +604,7 @@ namespace lithostress
 
     TimerOutput::Scope t(*timer, "refine");
     Timer              clock(communicator, true);
-    if (refinement.initial_global_refinement > 0)
+    if (refine_initially && refinement.initial_global_refinement > 0)
       triangulation.refine_global(refinement.initial_global_refinement);
     statistics.mesh_time = clock.wall_time();
   }

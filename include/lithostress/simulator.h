@@ -131,9 +131,10 @@ namespace lithostress
     /** Read and check the model (the constructor's work). */
     void
     read_model();
-    /** The log's header and the initial global refinement. */
+    /** The log's header and (if @p refine_initially) the initial global
+     * refinement. */
     void
-    write_run_header();
+    write_run_header(const bool refine_initially = true);
     /** Refine the mesh once (Mesh refinement section); @p mesh names it
      * in the memory check, @p before_change runs once the cells are
      * marked, before the mesh changes (to attach data to transfer). */

@@ -1,7 +1,13 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/point_values.h>
+#include <lithostress/time_integration/checkpoint.h>
 #include <lithostress/time_integration/viscoelastic_time_loop.h>
+
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include <iomanip>
 #include <limits>
@@ -178,8 +184,16 @@ namespace lithostress
             << ',' << values[k].stress[0][1] << ',' << values[k].sigma_zz;
         point_history.push_back(row.str());
       }
+    write_point_history();
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::write_point_history() const
+  {
     on_all_ranks(sim.communicator, [&]() {
-      if (Utilities::MPI::this_mpi_process(sim.communicator) != 0)
+      if (Utilities::MPI::this_mpi_process(sim.communicator) != 0 ||
+          sim.points.empty())
         return;
       OutputFile csv(sim.output_directory + "/point_history.csv");
       csv << "time,point,x,y,u_x,u_y,s_xx,s_yy,s_xy,s_zz\n";
@@ -229,20 +243,10 @@ namespace lithostress
 
   template <int dim>
   void
-  ViscoelasticTimeLoop<dim>::run()
+  ViscoelasticTimeLoop<dim>::start()
   {
-    sim.write_run_header();
     StressModel<dim>     &model = *sim.stress_model;
     CreepIntegrator<dim> &creep = *sim.creep;
-    sim.log << "Visco-elastic time loop to "
-            << settings.format(settings.end_time) << " (" << settings.end_time
-            << " s; every output time in s), "
-            << (settings.scheme == TimeStepping::Scheme::thesis
-                  ? std::string("thesis initial-strain scheme")
-                  : "implicit scheme, theta = " +
-                      std::to_string(settings.theta))
-            << '\n';
-
     // The elastic response at t = 0 on the mesh of the refinement cycles.
     sim.time = 0;
     model.set_time_step(0, settings.theta);
@@ -254,7 +258,6 @@ namespace lithostress
       }
     --sim.cycle;
     ++linear_solves;
-    sim.keep_solver_setup = true;
     creep.creep_strain().setup();
     creep.setup_step_fields();
     model.attach_creep_strain(&creep.creep_strain());
@@ -271,9 +274,190 @@ namespace lithostress
            : (std::isfinite(shortest_maxwell_time)
                 ? std::sqrt(2 * settings.tolerance) * shortest_maxwell_time
                 : settings.end_time / 100);
+  }
+
+  namespace
+  {
+    /** Exact text of a double (hexadecimal), read back by std::stod. */
+    std::string
+    exact(const double x)
+    {
+      std::ostringstream out;
+      out << std::hexfloat << x;
+      return out.str();
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::write_checkpoint()
+  {
+    TimerOutput::Scope timer(*sim.timer, "checkpoint");
+    const MPI_Comm     comm = sim.communicator;
+    const bool         root = Utilities::MPI::this_mpi_process(comm) == 0;
+    const std::string  directory =
+      sim.output_directory + "/checkpoint-" + Utilities::int_to_string(step, 6);
+    on_all_ranks(comm, [&]() {
+      if (root)
+        {
+          std::filesystem::remove_all(directory);
+          std::filesystem::create_directories(directory);
+        }
+    });
+    // The mesh with its fields: readable on any number of ranks.
+    sim.creep->prepare_for_checkpoint();
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+      displacement(sim.dof_handler);
+    displacement.prepare_for_serialization(sim.solution);
+    sim.triangulation.save(directory + "/mesh");
+
+    on_all_ranks(comm, [&]() {
+      if (!root)
+        return;
+      std::ostringstream state;
+      state << "lithostress-checkpoint 1\n"
+            << "step " << step << "\ntime " << exact(t) << "\ndt " << exact(dt)
+            << "\nstrain_scale " << exact(strain_scale) << "\nlinear_solves "
+            << linear_solves << "\nrecords "
+            << sim.solution_output.records.size() << '\n';
+      for (const auto &[time, file] : sim.solution_output.records)
+        state << exact(time) << ' ' << file << '\n';
+      state << "steps " << steps.size() << '\n';
+      for (const StepRecord &r : steps)
+        state << r.step << ' ' << exact(r.time) << ' ' << exact(r.dt) << ' '
+              << r.dofs << ' ' << r.cells << ' ' << r.linear_iterations << ' '
+              << r.nonlinear_iterations << ' ' << r.rejected << ' '
+              << exact(r.creep_increment) << ' ' << exact(r.error_estimate)
+              << ' ' << exact(r.wall_time) << '\n';
+      state << "history " << point_history.size() << '\n';
+      for (const std::string &row : point_history)
+        state << row << '\n';
+      write_file_atomically(directory + "/state.txt", state.str(), false);
+      write_file_atomically(directory + "/model.prm",
+                            Checkpoint::model_text(sim.prm),
+                            false);
+    });
+    // Every rank's part of the mesh is written: only now does the pointer
+    // move to the new checkpoint.
+    MPI_Barrier(comm);
+    on_all_ranks(comm, [&]() {
+      if (root)
+        Checkpoint::make_current(sim.output_directory, directory);
+    });
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::resume()
+  {
+    StressModel<dim>     &model     = *sim.stress_model;
+    CreepIntegrator<dim> &creep     = *sim.creep;
+    const std::string     directory = Checkpoint::current(sim.output_directory);
+    std::ifstream         in(directory + "/state.txt");
+    std::string           word;
+    unsigned int          version = 0, n = 0;
+    const auto            expect = [&](const std::string &key) {
+      in >> word;
+      if (word != key)
+        throw ComputationError("the checkpoint " + directory +
+                               "/state.txt is damaged (expected <" + key +
+                               ">, found <" + word + ">)");
+    };
+    const auto number = [&]() {
+      in >> word;
+      return std::stod(word);
+    };
+    expect("lithostress-checkpoint");
+    in >> version;
+    expect("step");
+    in >> step;
+    expect("time");
+    t = number();
+    expect("dt");
+    dt = number();
+    expect("strain_scale");
+    strain_scale = number();
+    expect("linear_solves");
+    in >> linear_solves;
+    expect("records");
+    in >> n;
+    sim.solution_output.records.clear();
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double time = number();
+        in >> word;
+        sim.solution_output.records.emplace_back(time, word);
+      }
+    expect("steps");
+    in >> n;
+    steps.resize(n);
+    for (StepRecord &r : steps)
+      {
+        in >> r.step;
+        r.time = number();
+        r.dt   = number();
+        in >> r.dofs >> r.cells >> r.linear_iterations >>
+          r.nonlinear_iterations >> r.rejected;
+        r.creep_increment = number();
+        r.error_estimate  = number();
+        r.wall_time       = number();
+      }
+    expect("history");
+    in >> n;
+    std::getline(in, word);
+    point_history.resize(n);
+    for (std::string &row : point_history)
+      std::getline(in, row);
+    if (!in)
+      throw ComputationError("the checkpoint " + directory +
+                             "/state.txt is damaged (truncated)");
+
+    // The mesh and the fields, in the order they were attached.
+    sim.triangulation.load(directory + "/mesh");
+    sim.time = t;
+    model.set_time_step(0, settings.theta);
+    sim.setup_dofs();
+    creep.load_from_checkpoint();
+    parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
+                                  displacement(sim.dof_handler);
+    TrilinosWrappers::MPI::Vector owned(sim.system.locally_owned,
+                                        sim.communicator);
+    displacement.deserialize(owned);
+    sim.solution.reinit(sim.system.locally_owned,
+                        sim.system.locally_relevant,
+                        sim.communicator);
+    sim.solution = owned;
+    model.attach_creep_strain(&creep.creep_strain());
+    sim.start_output();
+    sim.log << "Resumed from " << directory << ": step " << step
+            << ", t = " << settings.format(t) << " (" << t << " s), "
+            << sim.triangulation.n_global_active_cells() << " cells\n";
+    write_time_steps();
+    write_point_history();
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::run()
+  {
+    sim.write_run_header(!settings.resume);
+    sim.log << "Visco-elastic time loop to "
+            << settings.format(settings.end_time) << " (" << settings.end_time
+            << " s; every output time in s), "
+            << (settings.scheme == TimeStepping::Scheme::thesis
+                  ? std::string("thesis initial-strain scheme")
+                  : "implicit scheme, theta = " +
+                      std::to_string(settings.theta))
+            << '\n';
+    sim.keep_solver_setup = true;
+    if (settings.resume)
+      resume();
+    else
+      start();
 
     while (t < settings.end_time)
       {
+        sim.stop_if_requested("time step " + std::to_string(step + 1));
         StepRecord record;
         Timer      clock(sim.communicator, true);
         double     t_new = settings.next_time(t, dt);
@@ -316,7 +500,11 @@ namespace lithostress
         if (settings.refinement_interval > 0 &&
             step % settings.refinement_interval == 0 && t < settings.end_time)
           refine_mesh();
+        if (settings.checkpoint_interval > 0 &&
+            step % settings.checkpoint_interval == 0 && t < settings.end_time)
+          write_checkpoint();
       }
+    write_checkpoint();
     sim.log << "Time loop: " << step << " steps, " << linear_solves
             << " linear solves, " << std::setprecision(4)
             << wall_clock.wall_time() << " s\n";

@@ -81,6 +81,27 @@ namespace lithostress
       return history;
     }
 
+    /** Attach the creep strain and the start rate to the triangulation's
+     * next save() (collective). */
+    void
+    prepare_for_checkpoint()
+    {
+      creep.prepare_for_checkpoint();
+      start_rate.prepare_for_checkpoint();
+    }
+
+    /** After triangulation.load(): read them back (in the order of
+     * prepare_for_checkpoint()) and size the work fields. */
+    void
+    load_from_checkpoint()
+    {
+      creep.load_from_checkpoint();
+      start_rate.load_from_checkpoint();
+      history.setup();
+      end_rate.setup();
+      start_rate_current = true;
+    }
+
     /** Remember the creep strain c_n at the start of a step. */
     void
     keep_start()

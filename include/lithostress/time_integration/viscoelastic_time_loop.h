@@ -70,9 +70,27 @@ namespace lithostress
     void
     write_output(const unsigned int index);
 
+    /** Rewrite point_history.csv with all rows so far. */
+    void
+    write_point_history() const;
+
     /** Rewrite time_steps.csv with all steps so far. */
     void
     write_time_steps() const;
+
+    /** The elastic response at t = 0 on the mesh of the refinement
+     * cycles: the start of a new run. */
+    void
+    start();
+
+    /** Continue from the current checkpoint (Checkpoint): mesh, fields
+     * and the loop's state; the outputs are rewritten up to it. */
+    void
+    resume();
+
+    /** Write a checkpoint of the current state (collective). */
+    void
+    write_checkpoint();
 
     /** One line per step on screen and in log.txt. */
     void

@@ -1,0 +1,124 @@
+#include <deal.II/base/mpi.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/output/output_file.h>
+#include <lithostress/time_integration/checkpoint.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace lithostress
+{
+  std::string
+  Checkpoint::model_text(ParameterHandler &prm)
+  {
+    std::ostringstream all;
+    prm.print_parameters(all, ParameterHandler::ShortPRM);
+    std::istringstream lines(all.str());
+    std::ostringstream model;
+    std::string        line;
+    unsigned int       depth = 0, skipped_from = 0;
+    bool               skipping = false;
+    while (std::getline(lines, line))
+      {
+        const std::string trimmed = Utilities::trim(line);
+        if (trimmed.rfind("subsection ", 0) == 0)
+          {
+            ++depth;
+            const std::string name = Utilities::trim(trimmed.substr(11));
+            if (!skipping && depth == 1 &&
+                (name == "Time stepping" || name == "Output" ||
+                 name == "Solver" || name == "Resources"))
+              {
+                skipping     = true;
+                skipped_from = depth;
+              }
+          }
+        else if (trimmed == "end")
+          {
+            if (skipping && depth == skipped_from)
+              {
+                skipping = false;
+                --depth;
+                continue;
+              }
+            --depth;
+          }
+        else if (depth == 0 && trimmed.rfind("set Output directory", 0) == 0)
+          continue;
+        if (!skipping && !trimmed.empty())
+          model << trimmed << '\n';
+      }
+    return model.str();
+  }
+
+  std::string
+  Checkpoint::current(const std::string &output_directory)
+  {
+    std::ifstream pointer(output_directory + "/checkpoint.current");
+    std::string   name;
+    if (!(pointer >> name))
+      return "";
+    return output_directory + "/" + name;
+  }
+
+  void
+  Checkpoint::check_resumable(const std::string &output_directory,
+                              ParameterHandler  &prm,
+                              const MPI_Comm     communicator)
+  {
+    std::string problem;
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        const std::string directory = current(output_directory);
+        std::ifstream     saved(directory + "/model.prm");
+        if (directory.empty())
+          problem = "there is no checkpoint in " + output_directory +
+                    " (no checkpoint.current)";
+        else if (!saved)
+          problem = "the checkpoint " + directory + " has no model.prm";
+        else
+          {
+            std::stringstream text;
+            text << saved.rdbuf();
+            std::istringstream a(text.str()), b(model_text(prm));
+            std::string        line_a, line_b;
+            while (problem.empty())
+              {
+                const bool more_a = static_cast<bool>(std::getline(a, line_a));
+                const bool more_b = static_cast<bool>(std::getline(b, line_b));
+                if (!more_a && !more_b)
+                  break;
+                if (line_a != line_b || more_a != more_b)
+                  problem = "the checkpoint " + directory +
+                            " belongs to another model: it has <" +
+                            (more_a ? line_a : std::string("(end)")) +
+                            "> where this model has <" +
+                            (more_b ? line_b : std::string("(end)")) + ">";
+              }
+          }
+      }
+    problem = Utilities::MPI::broadcast(communicator, problem, 0);
+    if (!problem.empty())
+      throw_input_error("Time stepping/Resume", problem);
+  }
+
+  void
+  Checkpoint::make_current(const std::string &output_directory,
+                           const std::string &directory)
+  {
+    const std::string name =
+      std::filesystem::path(directory).filename().string();
+    write_file_atomically(output_directory + "/checkpoint.current",
+                          name + "\n");
+    for (const auto &entry :
+         std::filesystem::directory_iterator(output_directory))
+      {
+        const std::string other = entry.path().filename().string();
+        if (entry.is_directory() && other.rfind("checkpoint-", 0) == 0 &&
+            other != name)
+          std::filesystem::remove_all(entry.path());
+      }
+  }
+} // namespace lithostress
