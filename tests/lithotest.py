@@ -20,11 +20,13 @@ def env():
     return e
 
 
-def run(prm, output, ranks=1, sets=(), expect_success=True, extra_env=None):
+def run(prm, output, ranks=1, sets=(), expect_success=True, extra_env=None,
+        keep_output=False):
     """Run lithostress on tests/<prm> writing into <output> (with the
     environment variables @extra_env added); returns the CompletedProcess.
-    Fails the test if the run fails unexpectedly."""
-    if os.path.isdir(output):
+    Fails the test if the run fails unexpectedly. The output directory is
+    removed first unless keep_output (a resumed run)."""
+    if os.path.isdir(output) and not keep_output:
         shutil.rmtree(output)
     cmd = [BINARY, os.path.join(SOURCE, prm), "--set", "Output directory=" + output]
     for s in sets:

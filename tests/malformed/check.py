@@ -61,6 +61,12 @@ expected = {
     "mesh_too_large": "Resources/Memory limit>: the first mesh (cycle 0) would have about 1.07e+09 cells",
     "memory_limit_too_small": "the limit set by Resources/Memory limit",
     "memory_limit_unparsable": "Resources/Memory limit",
+    # The visco-elastic time loop.
+    "negative_viscosity": "Viscosity",
+    "end_time_zero": "Time stepping/End time",
+    "output_time_after_end": "Time stepping/Output times>: the time 4000 years is outside [0, End time]",
+    "resume_without_checkpoint": "Time stepping/Resume>: there is no checkpoint",
+    "resume_other_model": "checkpoint-000007 belongs to another model",
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",
     "gmsh_missing_node": "gmsh_missing_node.msh>: While creating cell 11 (which is numbered as 12 in the input file), you are referencing a vertex with index 19",
@@ -95,6 +101,14 @@ for name in files:
             f.write("results of an earlier run\n")
         with open(os.path.join(earlier, "figures", "surface_profile.csv"), "w") as f:
             f.write("x,u_x,u_y,y\n0,1,2,3\n")
+        if name == "resume_other_model":
+            # The checkpoint of a stiffer block.
+            os.makedirs(os.path.join(earlier, "checkpoint-000007"))
+            with open(os.path.join(earlier, "checkpoint.current"), "w") as f:
+                f.write("checkpoint-000007\n")
+            model = open(os.path.join(os.path.dirname(HERE), "viscoelastic", "maxwell_block.prm")).read()
+            with open(os.path.join(earlier, "checkpoint-000007", "model.prm"), "w") as f:
+                f.write(model.replace("1e11", "2e11"))
         before = tree(earlier)
         cmd = [BINARY, os.path.join(HERE, name + ".prm")]
         if name == "unwritable_output_directory":

@@ -1,0 +1,108 @@
+"""Checkpoint and restart of the visco-elastic loop (issue 15, verification 5)
+on the cylinder of prm/viscoelastic_cylinder.prm (coarse mesh, 1e-3 step
+tolerance, a checkpoint every 10 steps):
+
+1. an uninterrupted run on 1 rank is the reference;
+2. a run killed (SIGKILL) after its checkpoint of step 20 and before that
+   of step 40, with a half-written checkpoint directory left behind as a
+   kill during the next checkpoint would leave it, resumes (--resume) on
+   2 ranks from the last complete checkpoint and ends with the reference's
+   answer to 1e-10 relative (point history, every step's time and step);
+3. resumed on 1 rank from its final checkpoint with a longer end time, it
+   continues the same series.
+Input errors (no checkpoint, another model's) are in malformed/check.py.
+"""
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(HERE))
+from lithotest import BINARY, check, env, finish, read_csv, run  # noqa: E402
+
+PRM = os.path.join(os.path.dirname(os.path.dirname(HERE)), "prm", "viscoelastic_cylinder.prm")
+SETS = ["Mesh refinement/Initial global refinement=0",
+        "Time stepping/Creep strain tolerance=1e-3",
+        "Time stepping/Checkpoint interval=10",
+        "Output/Write ParaView files=false",
+        "Output/Figures/Enabled=false"]
+
+
+def arguments(out):
+    args = [BINARY, PRM, "--set", "Output directory=" + out]
+    for s in SETS:
+        args += ["--set", s]
+    return args
+
+
+def history(out):
+    return read_csv(os.path.join(out, "point_history.csv"))
+
+
+def relative_difference(a, b):
+    """Largest difference of displacements and stresses, each relative to
+    the largest magnitude of its column (s_xy is zero on the x axis but
+    for round-off)."""
+    worst = 0.0
+    for k in ("u_x", "s_xx", "s_yy", "s_xy", "s_zz"):
+        scale = max(max(abs(x[k]) for x in a), max(abs(x["s_xx"]) for x in a) if k[0] == "s" else 0)
+        worst = max(worst, max(abs(x[k] - y[k]) for x, y in zip(a, b)) / scale)
+    return worst
+
+
+reference = os.path.abspath("output_restart_reference")
+run(PRM, reference, 1, SETS)
+ref_rows = history(reference)
+ref_steps = read_csv(os.path.join(reference, "time_steps.csv"))
+check(len(ref_steps) > 40 and open(os.path.join(reference, "checkpoint.current")).read().strip()
+      == "checkpoint-%06d" % len(ref_steps),
+      "reference: %d steps, final checkpoint checkpoint-%06d" % (len(ref_steps), len(ref_steps)))
+
+killed = os.path.abspath("output_restart_killed")
+shutil.rmtree(killed, ignore_errors=True)
+process = subprocess.Popen(arguments(killed), stdout=subprocess.DEVNULL,
+                           stderr=subprocess.DEVNULL, env=env())
+pointer = os.path.join(killed, "checkpoint.current")
+deadline = time.time() + 600
+while time.time() < deadline and process.poll() is None:
+    if os.path.exists(pointer) and open(pointer).read().strip() == "checkpoint-000020":
+        break
+    time.sleep(0.05)
+process.send_signal(signal.SIGKILL)
+process.wait()
+current = open(pointer).read().strip()
+check(current in ("checkpoint-000020", "checkpoint-000030"),
+      "killed with %s as the last complete checkpoint" % current)
+# What a kill in the middle of the next checkpoint leaves: a directory
+# without its state, never named by checkpoint.current.
+half = os.path.join(killed, "checkpoint-000099")
+shutil.copytree(os.path.join(killed, current), half)
+os.remove(os.path.join(half, "state.txt"))
+with open(os.path.join(half, "mesh"), "wb") as f:
+    f.write(b"\0" * 16)
+
+resumed = run(PRM, killed, 2, SETS + ["Time stepping/Resume=true"], keep_output=True)
+check("Resumed from %s/%s" % (killed, current) in open(os.path.join(killed, "log.txt")).read(),
+      "resumed on 2 ranks from %s, not from the half-written directory" % current)
+rows = history(killed)
+steps = read_csv(os.path.join(killed, "time_steps.csv"))
+difference = relative_difference(ref_rows, rows)
+check(len(rows) == len(ref_rows) and difference <= 1e-10,
+      "resumed run = uninterrupted run: %d rows, largest relative difference %.1e"
+      % (len(rows), difference))
+check([(r["step"], r["time"]) for r in steps] == [(r["step"], r["time"]) for r in ref_steps],
+      "the same %d steps at the same times" % len(steps))
+check(not os.path.exists(half), "the half-written checkpoint directory is removed")
+
+# Continue the finished run to a later end time.
+longer = SETS + ["Time stepping/Resume=true", "Time stepping/End time=12",
+                 "Time stepping/Output times=0, 0.5, 1, 2, 5, 10, 12"]
+run(PRM, killed, 1, longer, keep_output=True)
+rows = history(killed)
+check(len(rows) == len(ref_rows) + 3 and relative_difference(ref_rows, rows[:len(ref_rows)]) <= 1e-10
+      and abs(rows[-1]["time"] - 12) < 1e-12,
+      "continued to t = 12 s: the earlier rows unchanged, three more at t = 12")
+finish()
