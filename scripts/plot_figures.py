@@ -830,6 +830,45 @@ def directory_of(path):
 # --------------------------------------------------------------------------
 
 
+def plot_point_history(directory, settings):
+    """Stress against time at the report points of a visco-elastic run
+    (point_history.csv): s_xx, s_yy, s_xy, s_zz (MPa, or Pa if small) against t in the
+    run's time unit, one panel per component, one line per point."""
+    path = os.path.join(directory, "point_history.csv")
+    if not os.path.exists(path):
+        return None
+    rows = list(csv.DictReader(open(path)))
+    if not rows:
+        return None
+    prm = read_prm(os.path.join(directory, "parameters.prm"))
+    unit = prm.get("Time stepping/Time unit", "s")
+    seconds = {"s": 1.0, "years": 365.25 * 86400, "kyr": 365.25 * 86400e3,
+               "Myr": 365.25 * 86400e6}.get(unit, 1.0)
+    points = sorted({int(r["point"]) for r in rows})
+    largest = max(abs(float(r[k])) for r in rows for k in ("s_xx", "s_yy", "s_xy", "s_zz"))
+    scale, stress_unit = (1e6, "MPa") if largest >= 1e5 else (1.0, "Pa")
+    fig, axes = plt.subplots(2, 2, figsize=(10, 7), sharex=True)
+    for ax, key, name in zip(axes.flat, ("s_xx", "s_yy", "s_xy", "s_zz"),
+                             (r"$\sigma_{xx}$", r"$\sigma_{yy}$", r"$\sigma_{xy}$",
+                              r"$\sigma_{zz}$")):
+        for p in points:
+            mine = [r for r in rows if int(r["point"]) == p]
+            ax.plot([float(r["time"]) / seconds for r in mine],
+                    [float(r[key]) / scale for r in mine], "o-", markersize=3,
+                    label="P%d (%.4g, %.4g) m" % (p, float(mine[0]["x"]), float(mine[0]["y"])))
+        ax.set_ylabel("%s [%s]" % (name, stress_unit))
+        ax.grid(alpha=0.3)
+    for ax in axes[1]:
+        ax.set_xlabel("t [%s]" % unit)
+    axes[0][0].legend(fontsize=7)
+    fig.suptitle(titled(settings, "Stress against time at the report points"))
+    fig.tight_layout()
+    out = os.path.join(directory, "point_history.png")
+    save_complete(fig, out)
+    plt.close(fig)
+    return out
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("directory", help="output directory of a run")
@@ -846,7 +885,8 @@ def main():
         return 1
 
     jobs = [("principal stresses", lambda: plot_principal_stresses(directory, settings)),
-            ("surface profile", lambda: plot_surface_profile(directory, settings))]
+            ("surface profile", lambda: plot_surface_profile(directory, settings)),
+            ("point history", lambda: plot_point_history(directory, settings))]
     for path in sorted(glob.glob(os.path.join(glob.escape(directory), "stress_depth_*.csv"))):
         jobs.append((os.path.basename(path), lambda p=path: plot_stress_depth(p, settings)))
     status = 0
