@@ -178,7 +178,8 @@ namespace lithostress
     const DoFHandler<dim>               &dof_handler,
     const FiniteElementSpace<dim>       &fe_space,
     const StressModel<dim>              &stress_model,
-    const TrilinosWrappers::MPI::Vector &solution)
+    const TrilinosWrappers::MPI::Vector &solution,
+    double                              &stress_scale)
   {
     double                      change = 0, largest = 0;
     std::vector<Vector<double>> c, h, rate;
@@ -216,7 +217,8 @@ namespace lithostress
     const MPI_Comm comm = dof_handler.get_communicator();
     change              = Utilities::MPI::max(change, comm);
     largest             = Utilities::MPI::max(largest, comm);
-    return largest > 0 ? change / largest : 0.0;
+    stress_scale        = std::max(stress_scale, largest);
+    return stress_scale > 0 ? change / stress_scale : 0.0;
   }
 
   template <int dim>

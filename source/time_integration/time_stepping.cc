@@ -81,7 +81,9 @@ namespace lithostress
                       "tangent, one linear solve per step; thesis = the "
                       "initial-strain scheme of thesis §3.9 (creep from the "
                       "average of start- and end-of-step stress, the "
-                      "elastic operator, fixed-point iteration).");
+                      "elastic operator, fixed-point iteration; it converges "
+                      "only for steps below about 2 eta/G: bound them with "
+                      "Maximum time step).");
     prm.declare_entry("Theta",
                       "1",
                       Patterns::Double(0.5, 1),
@@ -93,7 +95,8 @@ namespace lithostress
                       Patterns::Double(0),
                       "Thesis scheme: iterate until the largest change of the "
                       "deviatoric stress between two iterations, relative to "
-                      "the largest deviatoric stress, is below this.");
+                      "the largest deviatoric stress of the run so far, is "
+                      "below this.");
     prm.declare_entry("Maximum fixed point iterations",
                       "50",
                       Patterns::Integer(1),

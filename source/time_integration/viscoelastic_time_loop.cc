@@ -92,7 +92,8 @@ namespace lithostress
             change = creep.update_thesis_history(sim.dof_handler,
                                                  *sim.fe_space,
                                                  model,
-                                                 sim.solution);
+                                                 sim.solution,
+                                                 stress_scale);
             if (change <= settings.fixed_point_tolerance)
               break;
             if (record.nonlinear_iterations >=
@@ -317,9 +318,9 @@ namespace lithostress
       std::ostringstream state;
       state << "lithostress-checkpoint 1\n"
             << "step " << step << "\ntime " << exact(t) << "\ndt " << exact(dt)
-            << "\nstrain_scale " << exact(strain_scale) << "\nlinear_solves "
-            << linear_solves << "\nrecords "
-            << sim.solution_output.records.size() << '\n';
+            << "\nstrain_scale " << exact(strain_scale) << "\nstress_scale "
+            << exact(stress_scale) << "\nlinear_solves " << linear_solves
+            << "\nrecords " << sim.solution_output.records.size() << '\n';
       for (const auto &[time, file] : sim.solution_output.records)
         state << exact(time) << ' ' << file << '\n';
       state << "steps " << steps.size() << '\n';
@@ -377,6 +378,8 @@ namespace lithostress
     dt = number();
     expect("strain_scale");
     strain_scale = number();
+    expect("stress_scale");
+    stress_scale = number();
     expect("linear_solves");
     in >> linear_solves;
     expect("records");

@@ -145,13 +145,16 @@ namespace lithostress
                          const TrilinosWrappers::MPI::Vector &solution);
 
     /** One fixed-point update of the thesis scheme from the new solution;
-     * returns the largest change of the deviatoric stress relative to the
-     * largest deviatoric stress. */
+     * returns the largest change of the deviatoric stress relative to
+     * @p stress_scale, which is raised to the largest deviatoric stress
+     * if that is larger (the run's largest so far: a relaxing stress is
+     * measured against its initial size, not against round-off). */
     double
     update_thesis_history(const DoFHandler<dim>               &dof_handler,
                           const FiniteElementSpace<dim>       &fe_space,
                           const StressModel<dim>              &stress_model,
-                          const TrilinosWrappers::MPI::Vector &solution);
+                          const TrilinosWrappers::MPI::Vector &solution,
+                          double                              &stress_scale);
 
     /** End a thesis step: c_{n+1} = c_n + Δc of the last update. */
     Increment

@@ -101,7 +101,10 @@ namespace lithostress
     double              t = 0, dt = 0;
     /** The largest elastic deviatoric strain max‖s/(2G)‖ of the run so
      * far: the scale of the step's error estimate. */
-    double                   strain_scale = 0;
+    double strain_scale = 0;
+    /** The largest deviatoric stress of the run so far: the scale of the
+     * thesis scheme's fixed-point test. */
+    double                   stress_scale = 0;
     unsigned int             step = 0, linear_solves = 0;
     std::vector<StepRecord>  steps;
     std::vector<std::string> point_history;
