@@ -138,9 +138,8 @@ namespace lithostress
       stress_model,
       solution,
       [&](const auto &cell, const auto &points, const auto &strains) {
-        const types::material_id    id    = cell->material_id();
-        const MaxwellMaterial<dim> &law   = stress_model.maxwell(id);
-        const double                two_g = 2.0 * stress_model.moduli(id).mu;
+        const types::material_id    id  = cell->material_id();
+        const MaxwellMaterial<dim> &law = stress_model.maxwell(id);
         creep.get(cell, c);
         history.get(cell, h);
         start_rate.get(cell, rate);
@@ -152,15 +151,12 @@ namespace lithostress
             const SymmetricTensor<2, 3> rate_end = law.creep_rate(sigma);
             const SymmetricTensor<2, 3> c_new =
               c_star + theta * step * rate_end;
-            increment.creep_change =
-              std::max(increment.creep_change,
-                       (c_new - CreepStrain<dim>::tensor(c[q])).norm());
-            increment.local_error =
-              std::max(increment.local_error,
-                       0.5 * step *
-                         (rate_end - CreepStrain<dim>::tensor(rate[q])).norm());
-            increment.elastic_strain = std::max(increment.elastic_strain,
-                                                deviator(sigma).norm() / two_g);
+            increment.add(CreepStrain<dim>::tensor(c[q]),
+                          c_new,
+                          CreepStrain<dim>::tensor(rate[q]),
+                          rate_end,
+                          law.maxwell_time(),
+                          step);
             CreepStrain<dim>::components(c_new, c[q]);
             CreepStrain<dim>::components(rate_end, rate[q]);
           }
@@ -241,19 +237,16 @@ namespace lithostress
             {
               const SymmetricTensor<2, 3> c_new =
                 CreepStrain<dim>::tensor(h[q]);
-              increment.creep_change =
-                std::max(increment.creep_change,
-                         (c_new - CreepStrain<dim>::tensor(c[q])).norm());
-              // s_{n+1}/(2G) = τ × (end-of-step rate) = τ (2 Δc/Δt − rate_n).
+              // The trapezoidal rule's end rate: 2 Δc/Δt − ċ_n.
               const SymmetricTensor<2, 3> rate_end =
                 2.0 / step * (c_new - CreepStrain<dim>::tensor(c[q])) -
                 CreepStrain<dim>::tensor(rate[q]);
-              increment.elastic_strain =
-                std::max(increment.elastic_strain, tau * rate_end.norm());
-              increment.local_error = std::max(
-                increment.local_error,
-                0.5 * step *
-                  (rate_end - CreepStrain<dim>::tensor(rate[q])).norm());
+              increment.add(CreepStrain<dim>::tensor(c[q]),
+                            c_new,
+                            CreepStrain<dim>::tensor(rate[q]),
+                            rate_end,
+                            tau,
+                            step);
               CreepStrain<dim>::components(rate_end, rate[q]);
             }
           creep.set(cell, h);

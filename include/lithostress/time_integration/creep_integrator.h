@@ -9,6 +9,7 @@
 #include <lithostress/materials/stress_model.h>
 #include <lithostress/time_integration/creep_strain.h>
 
+#include <algorithm>
 #include <functional>
 
 namespace lithostress
@@ -50,6 +51,23 @@ namespace lithostress
       double local_error = 0;
       /** max ‖s_{n+1}‖/(2G) over the nodes of Maxwell materials. */
       double elastic_strain = 0;
+
+      /** Include one node: creep strain @p c_old → @p c_new over a step of
+       * length @p dt with start and end rates @p rate_start, @p rate_end
+       * in a material of Maxwell time @p tau (s/(2G) = τ ċ). */
+      void
+      add(const SymmetricTensor<2, 3> &c_old,
+          const SymmetricTensor<2, 3> &c_new,
+          const SymmetricTensor<2, 3> &rate_start,
+          const SymmetricTensor<2, 3> &rate_end,
+          const double                 tau,
+          const double                 dt)
+      {
+        creep_change = std::max(creep_change, (c_new - c_old).norm());
+        local_error =
+          std::max(local_error, 0.5 * dt * (rate_end - rate_start).norm());
+        elastic_strain = std::max(elastic_strain, tau * rate_end.norm());
+      }
 
       /** local_error relative to @p scale, the largest elastic strain of
        * the run so far (0 if nothing has been stressed). */
