@@ -536,7 +536,13 @@ namespace lithostress
         // statistics and the timing table so far, and say where it stopped.
         std::string message =
           stop.where() + " of cycle " + std::to_string(cycle) + "; ";
-        if (cycle == 0)
+        const std::string checkpoint = Checkpoint::current(output_directory);
+        if (time_stepping.enabled)
+          message =
+            stop.where() + "; " +
+            (checkpoint.empty() ? "no checkpoint was written yet"
+                                : "continue with --resume from " + checkpoint);
+        else if (cycle == 0)
           message += "no cycle was complete";
         else if (cycle == 1)
           message +=
