@@ -388,10 +388,13 @@ namespace lithostress
   {
     TimerOutput::Scope t(*timer, "assemble");
     Timer              clock(communicator, true);
-    for (const auto &load : loads.loads())
-      load->prepare_for_mesh(triangulation,
-                             fe_space->mapping(),
-                             fe_space->face_quadrature()[0]);
+    // Mesh integrals of the loads once per mesh, not once per time step.
+    if (loads_prepared_for != mesh_version)
+      for (const auto &load : loads.loads())
+        load->prepare_for_mesh(triangulation,
+                               fe_space->mapping(),
+                               fe_space->face_quadrature()[0]);
+    loads_prepared_for = mesh_version;
     for (const auto &load : loads.loads())
       load->set_time(time);
     ElasticAssembler<dim> assembler(*fe_space, *stress_model, loads);

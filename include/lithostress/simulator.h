@@ -187,6 +187,8 @@ namespace lithostress
     std::unique_ptr<CreepIntegrator<dim>> creep;
     /** Counts the meshes set up (setup_dofs()). */
     unsigned long long mesh_version = 0;
+    /** The mesh the loads' mesh integrals were computed on. */
+    unsigned long long loads_prepared_for = ~0ULL;
     /** The operator version the assembled matrix belongs to. */
     unsigned long long matrix_version = ~0ULL;
     /** Whether solvers keep their set-up between solves (time loop). */
