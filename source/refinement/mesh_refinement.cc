@@ -5,7 +5,6 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
-#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/numerics/error_estimator.h>
 #include <deal.II/numerics/vector_tools_common.h>
 
@@ -121,7 +120,11 @@ namespace lithostress
 
     // Zienkiewicz–Zhu: average the stress at the nodes of a continuous
     // Q_p field (each cell contributes its stress at the node), then
-    // η_K = ‖σ_h − σ*‖_{L2(K)}.
+    // η_K = ‖σ_h − σ*‖_{L2(K)}. The average is taken per material: across
+    // a material interface the tangential stress jumps physically (only
+    // the traction is continuous), and one average over both sides would
+    // report that jump as an error and refine the interface instead of
+    // where the solution is poorly resolved.
     const MPI_Comm      comm     = dof_handler.get_communicator();
     const unsigned int  n_stress = dim * (dim + 1) / 2;
     const FESystem<dim> stress_fe(FE_Q<dim>(fe_space.degree()), n_stress);
@@ -130,9 +133,22 @@ namespace lithostress
     const IndexSet owned = stress_dofs.locally_owned_dofs();
     IndexSet       relevant;
     DoFTools::extract_locally_relevant_dofs(stress_dofs, relevant);
-    TrilinosWrappers::MPI::Vector sum, weight;
-    sum.reinit(owned, relevant, comm, true);
-    weight.reinit(owned, relevant, comm, true);
+
+    std::vector<types::material_id> material_ids;
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->is_locally_owned())
+        material_ids.push_back(cell->material_id());
+    material_ids = Utilities::MPI::compute_set_union(material_ids, comm);
+    std::map<types::material_id, unsigned int> slot;
+    for (const auto id : material_ids)
+      slot.emplace(id, slot.size());
+    std::vector<TrilinosWrappers::MPI::Vector> sum(slot.size()),
+      weight(slot.size());
+    for (unsigned int m = 0; m < slot.size(); ++m)
+      {
+        sum[m].reinit(owned, relevant, comm, true);
+        weight[m].reinit(owned, relevant, comm, true);
+      }
 
     const Quadrature<dim> nodes(
       stress_fe.base_element(0).get_unit_support_points());
@@ -165,6 +181,7 @@ namespace lithostress
             grads.resize(fv.n_quadrature_points);
             fv[u].get_function_gradients(solution, grads);
             stress_cell->get_dof_indices(stress_indices);
+            const unsigned int m = slot.at(cell->material_id());
             for (unsigned int i = 0; i < stress_fe.n_dofs_per_cell(); ++i)
               {
                 const auto ci = stress_fe.system_to_component_index(i);
@@ -175,24 +192,31 @@ namespace lithostress
                             fv.quadrature_point(ci.second),
                             symmetrize(grads[ci.second]))
                     .in_plane;
-                sum(stress_indices[i]) += stress_component(s, ci.first);
-                weight(stress_indices[i]) += 1.0;
+                sum[m](stress_indices[i]) += stress_component(s, ci.first);
+                weight[m](stress_indices[i]) += 1.0;
               }
           }
         ++stress_cell;
       }
-    sum.compress(VectorOperation::add);
-    weight.compress(VectorOperation::add);
-    TrilinosWrappers::MPI::Vector average(owned, comm);
-    for (const auto i : owned)
-      average(i) = sum(i) / weight(i);
-    average.compress(VectorOperation::insert);
-    AffineConstraints<double> hanging(relevant);
-    DoFTools::make_hanging_node_constraints(stress_dofs, hanging);
-    hanging.close();
-    hanging.distribute(average);
-    TrilinosWrappers::MPI::Vector recovered(owned, relevant, comm);
-    recovered = average;
+    // No hanging-node constraints: a hanging node keeps the average of the
+    // cells that have it (a constraint would fill it from the coarse
+    // neighbour's nodes, which belong to another material's average where
+    // the coarse neighbour is of another material).
+    std::vector<TrilinosWrappers::MPI::Vector> recovered(slot.size());
+    for (unsigned int m = 0; m < slot.size(); ++m)
+      {
+        sum[m].compress(VectorOperation::add);
+        weight[m].compress(VectorOperation::add);
+        // Nodes no cell of material m touches keep 0; they are never read
+        // for a cell of material m.
+        TrilinosWrappers::MPI::Vector average(owned, comm);
+        for (const auto i : owned)
+          if (weight[m](i) > 0)
+            average(i) = sum[m](i) / weight[m](i);
+        average.compress(VectorOperation::insert);
+        recovered[m].reinit(owned, relevant, comm);
+        recovered[m] = average;
+      }
 
     hp::FEValues<dim>           hp_fe_values(fe_space.mapping_collection(),
                                    fe_space.fe_collection(),
@@ -219,7 +243,8 @@ namespace lithostress
             grads.resize(fv.n_quadrature_points);
             fv[u].get_function_gradients(solution, grads);
             stress_values.reinit(stress_cell);
-            stress_values.get_function_values(recovered, s_star);
+            stress_values.get_function_values(
+              recovered[slot.at(cell->material_id())], s_star);
             double e2 = 0;
             for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
               {
