@@ -238,7 +238,13 @@ namespace lithostress
     if (time_stepping.enabled)
       creep = std::make_unique<CreepIntegrator<dim>>(triangulation,
                                                      fe_space->degree() + 1);
-    linear_solver = LinearSolverSelector<dim>::create(prm, *fe_space, loads);
+    linear_solver = LinearSolverSelector<dim>::create(
+      prm,
+      *fe_space,
+      loads,
+      prescribed_displacement.has_rigid_components()
+        ? "a `rigid` boundary component ties DoFs along a whole edge"
+        : "");
     solution_output.parse_parameters(prm);
     memory_budget.parse_parameters(prm, communicator);
 

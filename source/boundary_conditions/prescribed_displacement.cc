@@ -3,6 +3,10 @@
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <algorithm>
+#include <limits>
+#include <set>
+
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/boundary_conditions/prescribed_displacement.h>
@@ -76,7 +80,9 @@ namespace lithostress
                             std::string("Prescribed ") + component_names[d] +
                               " displacement [m] as a function of x, y [m] "
                               "and t [s]; empty = free; `reference` = the "
-                              "reference solution's.");
+                              "reference solution's; `rigid` = the same "
+                              "unknown value all along the part (a rigid "
+                              "edge, loaded by a traction's resultant).");
         prm.declare_entry("Constants",
                           "",
                           Patterns::Anything(),
@@ -112,11 +118,12 @@ namespace lithostress
             const std::string text =
               Utilities::trim(prm.get(component_names[d]));
             part.from_reference[d] = (text == "reference");
+            part.rigid[d]          = (text == "rigid");
             if (part.from_reference[d] && reference == nullptr)
               throw_input_error(entry,
                                 "is `reference` but Convergence "
                                 "study/Reference solution is none");
-            if (!text.empty() && !part.from_reference[d])
+            if (!text.empty() && !part.from_reference[d] && !part.rigid[d])
               part.component[d] =
                 std::make_unique<ParsedExpression<dim>>(text, constants, entry);
             any = any || !text.empty();
@@ -128,6 +135,83 @@ namespace lithostress
         parts.push_back(std::move(part));
       }
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  bool
+  PrescribedDisplacement<dim>::has_rigid_components() const
+  {
+    for (const Part &part : parts)
+      for (unsigned int d = 0; d < dim; ++d)
+        if (part.rigid[d])
+          return true;
+    return false;
+  }
+
+  template <int dim>
+  void
+  PrescribedDisplacement<dim>::apply_rigid_components(
+    const DoFHandler<dim>         &dof_handler,
+    const FiniteElementSpace<dim> &fe_space,
+    AffineConstraints<double>     &constraints) const
+  {
+    const unsigned int n_components = fe_space.fe_collection().n_components();
+    const MPI_Comm     comm         = dof_handler.get_communicator();
+    std::vector<types::global_dof_index> face_dofs;
+    for (const Part &part : parts)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          if (!part.rigid[d])
+            continue;
+          // The component's DoFs on the part, on owned and ghost cells
+          // (every locally relevant one gets its constraint line).
+          std::set<types::global_dof_index> dofs;
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            {
+              if (cell->is_artificial())
+                continue;
+              const auto &fe = cell->get_fe();
+              if (fe.n_dofs_per_cell() == 0)
+                continue;
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary() && face->boundary_id() == part.id)
+                  {
+                    face_dofs.resize(fe.n_dofs_per_face());
+                    face->get_dof_indices(face_dofs, cell->active_fe_index());
+                    for (unsigned int i = 0; i < face_dofs.size(); ++i)
+                      {
+                        const unsigned int c =
+                          fe.face_system_to_component_index(i).first;
+                        if (c < n_components && c % dim == d)
+                          dofs.insert(face_dofs[i]);
+                      }
+                  }
+            }
+          const std::string entry =
+            "Boundary conditions/" + part.name + "/" + component_names[d];
+          bool conflict = false;
+          for (const auto i : dofs)
+            conflict = conflict || constraints.is_constrained(i);
+          if (Utilities::MPI::max(conflict ? 1 : 0, comm) == 1)
+            throw_input_error(entry,
+                              "is `rigid`, but another part already "
+                              "prescribes this component at a point of "
+                              "the part (a shared corner); a rigid edge "
+                              "must be free to move as a whole");
+          // The master: the smallest index on the part, the same on every
+          // rank.
+          const types::global_dof_index local_min =
+            dofs.empty() ? std::numeric_limits<types::global_dof_index>::max()
+                         : *dofs.begin();
+          const types::global_dof_index master =
+            Utilities::MPI::min(local_min, comm);
+          for (const auto i : dofs)
+            if (i != master)
+              {
+                constraints.add_line(i);
+                constraints.add_entry(i, master, 1.0);
+              }
+        }
   }
 
   template <int dim>
@@ -156,6 +240,8 @@ namespace lithostress
             const unsigned int d = c % dim;
             mask[c] = part.from_reference[d] || part.component[d] != nullptr;
           }
+        if (std::none_of(mask.begin(), mask.end(), [](bool m) { return m; }))
+          continue;
         const PartDisplacement<dim> function(part.component,
                                              part.from_reference,
                                              reference,
@@ -169,6 +255,7 @@ namespace lithostress
                                                  constraints,
                                                  ComponentMask(mask));
       }
+    apply_rigid_components(dof_handler, fe_space, constraints);
   }
 
   template <int dim>

@@ -167,13 +167,19 @@ namespace lithostress
   std::unique_ptr<LinearSolver<dim>>
   LinearSolverSelector<dim>::create(ParameterHandler              &prm,
                                     const FiniteElementSpace<dim> &fe_space,
-                                    const LoadCollection<dim>     &loads)
+                                    const LoadCollection<dim>     &loads,
+                                    const std::string &constraint_obstacle)
   {
     prm.enter_subsection("Solver");
     std::string type = prm.get("Type");
     std::string reason;
-    const bool  multigrid_applies =
+    bool        multigrid_applies =
       MatrixFreeMultigridSolver<dim>::applies_to(fe_space, loads, reason);
+    if (multigrid_applies && !constraint_obstacle.empty())
+      {
+        multigrid_applies = false;
+        reason            = constraint_obstacle;
+      }
     if (type == "matrix-free multigrid" && !multigrid_applies)
       {
         prm.leave_subsection();

@@ -67,6 +67,7 @@ expected = {
     "output_time_after_end": "Time stepping/Output times>: the time 4000 years is outside [0, End time]",
     "resume_without_checkpoint": "Time stepping/Resume>: there is no checkpoint",
     "resume_other_model": "checkpoint-000007 belongs to another model",
+    "rigid_edge_pinned_corner": "Boundary conditions/right/x>: is `rigid`, but another part already prescribes",
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",
     "gmsh_missing_node": "gmsh_missing_node.msh>: While creating cell 11 (which is numbered as 12 in the input file), you are referencing a vertex with index 19",

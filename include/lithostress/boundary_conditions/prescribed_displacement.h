@@ -22,6 +22,14 @@ namespace lithostress
    * 9): rollers (one component zero), fixed parts, or values given as
    * functions of position, or the reference solution's displacement.
    * Applied as constraints, after the hanging-node constraints.
+   *
+   * A component may also be `rigid`: the same unknown value at every point
+   * of the part, a rigid edge or piston (Kusznir & Bott 1977, thesis
+   * §7.3.2: a plate pushed by a uniform edge displacement, so that the
+   * force moves from a relaxing layer to an elastic one). Every DoF of the
+   * component on the part is constrained to one master DoF; a traction on
+   * the part (e.g. a `Resultant force`) then acts only through its total,
+   * which the constraints collect on the master.
    */
   template <int dim>
   class PrescribedDisplacement
@@ -56,6 +64,12 @@ namespace lithostress
     std::vector<std::pair<types::boundary_id, ComponentMask>>
     constrained_components(const FiniteElementSpace<dim> &fe_space) const;
 
+    /** Whether any part has a `rigid` component (constraints that couple
+     * DoFs along a whole edge: the matrix-free multigrid's level
+     * constraints cannot express them). */
+    bool
+    has_rigid_components() const;
+
     /** Whether part @p id has a prescribed component. */
     bool
     constrains(const types::boundary_id id) const;
@@ -67,8 +81,15 @@ namespace lithostress
       types::boundary_id                                      id;
       std::array<std::unique_ptr<ParsedExpression<dim>>, dim> component;
       std::array<bool, dim>                                   from_reference;
+      std::array<bool, dim>                                   rigid;
     };
-    std::vector<Part>             parts;
+
+    /** Constrain each `rigid` component of each part to one master DoF. */
+    void
+                      apply_rigid_components(const DoFHandler<dim>         &dof_handler,
+                                             const FiniteElementSpace<dim> &fe_space,
+                                             AffineConstraints<double>     &constraints) const;
+    std::vector<Part> parts;
     const ReferenceSolution<dim> *reference = nullptr;
   };
 } // namespace lithostress

@@ -201,11 +201,14 @@ namespace lithostress
     may_use_multigrid(ParameterHandler &prm);
 
     /** The solver for a model with element space @p fe_space and loads
-     * @p loads; throws InputError if the requested solver cannot handle it. */
+     * @p loads; throws InputError if the requested solver cannot handle it.
+     * A non-empty @p constraint_obstacle says why the model's constraints
+     * rule out the matrix-free multigrid (e.g. a rigid edge). */
     static std::unique_ptr<LinearSolver<dim>>
     create(ParameterHandler              &prm,
            const FiniteElementSpace<dim> &fe_space,
-           const LoadCollection<dim>     &loads);
+           const LoadCollection<dim>     &loads,
+           const std::string             &constraint_obstacle = "");
   };
 } // namespace lithostress
 
