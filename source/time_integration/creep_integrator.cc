@@ -14,7 +14,18 @@ namespace lithostress
       , history(triangulation, n_points_1d)
       , start_rate(triangulation, n_points_1d)
       , end_rate(triangulation, n_points_1d)
+      , previous(triangulation, n_points_1d)
   {
+  }
+
+  template <int dim>
+  void
+  CreepIntegrator<dim>::start_history()
+  {
+    creep.setup();
+    previous.setup();
+    previous_step = 0;
+    setup_step_fields();
   }
 
   template <int dim>
@@ -81,15 +92,15 @@ namespace lithostress
   }
 
   template <int dim>
-  void
+  double
   CreepIntegrator<dim>::begin_step(
     const DoFHandler<dim>               &dof_handler,
     const FiniteElementSpace<dim>       &fe_space,
     const StressModel<dim>              &stress_model,
     const TrilinosWrappers::MPI::Vector &solution,
     const double                         dt,
-    const double                         theta,
-    const bool                           thesis)
+    const TimeStepping::Scheme           scheme,
+    const double                         theta)
   {
     step = dt;
     // The rate s_n/(2η) of the start of the step: the end rate of the last
@@ -117,8 +128,27 @@ namespace lithostress
         start_rate.update_ghost_values();
         start_rate_current = true;
       }
-    // c* = c_n + (1 − θ) Δt ċ_n, or the thesis's predictor c_n + Δt ċ_n.
-    history.set_to_sum(creep, (thesis ? 1.0 : 1.0 - theta) * dt, start_rate);
+    bdf2_step = scheme == TimeStepping::Scheme::bdf2 && previous_step > 0;
+    if (bdf2_step)
+      {
+        // c* = ((1+ω)² c_n − ω² c_{n−1})/(1+2ω), weight (1+ω)/(1+2ω).
+        const double w = dt / previous_step;
+        history.set_to_combination((1 + w) * (1 + w) / (1 + 2 * w),
+                                   creep,
+                                   -w * w / (1 + 2 * w),
+                                   previous);
+        return (1 + w) / (1 + 2 * w);
+      }
+    if (scheme == TimeStepping::Scheme::thesis)
+      {
+        // The thesis's predictor c_n + Δt ċ_n.
+        history.set_to_sum(creep, dt, start_rate);
+        return 0;
+      }
+    // c* = c_n + (1 − θ) Δt ċ_n; BDF2 starts with a trapezoidal step.
+    const double weight = scheme == TimeStepping::Scheme::bdf2 ? 0.5 : theta;
+    history.set_to_sum(creep, (1 - weight) * dt, start_rate);
+    return weight;
   }
 
   template <int dim>
@@ -156,7 +186,8 @@ namespace lithostress
                           CreepStrain<dim>::tensor(rate[q]),
                           rate_end,
                           law.maxwell_time(),
-                          step);
+                          step,
+                          bdf2_step);
             CreepStrain<dim>::components(c_new, c[q]);
             CreepStrain<dim>::components(rate_end, rate[q]);
           }

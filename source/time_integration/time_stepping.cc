@@ -57,16 +57,18 @@ namespace lithostress
                       "Control the step by an estimate of its local error: "
                       "repeat a step whose estimate exceeds the Creep strain "
                       "tolerance with a shorter one, double the step while "
-                      "the estimate stays below a quarter of it. false = "
-                      "constant First time step.");
+                      "the estimate stays below a quarter (BDF2: an eighth) "
+                      "of it. false = constant First time step.");
     prm.declare_entry("Creep strain tolerance",
                       "1e-3",
                       Patterns::Double(0),
                       "Largest estimated local error of a step's creep-strain "
-                      "increment, (dt/2) max|dc/dt(end) - dc/dt(start)|, "
-                      "relative to the largest elastic deviatoric strain "
-                      "max|s/(2G)| of the Maxwell materials (dt^2/(2 tau^2) "
-                      "for a relaxing Maxwell element).");
+                      "increment relative to the largest elastic deviatoric "
+                      "strain max|s/(2G)| of the Maxwell materials: "
+                      "(dt/2) max|dc/dt(end) - dc/dt(start)| for a "
+                      "first-order step (dt^2/(2 tau^2) for a relaxing "
+                      "Maxwell element), (8/5) max|c(end) - c(start) - "
+                      "(dt/2)(dc/dt(start) + dc/dt(end))| for BDF2.");
     prm.declare_entry("Output times",
                       "",
                       Patterns::Anything(),
@@ -75,10 +77,13 @@ namespace lithostress
                       "on them exactly. The end time is always an output "
                       "time; 0 writes the elastic response.");
     prm.declare_entry("Scheme",
-                      "implicit",
-                      Patterns::Selection("implicit|thesis"),
-                      "implicit = generalised midpoint rule with the relaxed "
-                      "tangent, one linear solve per step; thesis = the "
+                      "BDF2",
+                      Patterns::Selection("BDF2|generalized midpoint|thesis"),
+                      "BDF2 = the variable-step second-order backward "
+                      "difference formula with the relaxed tangent (L-stable, "
+                      "one linear solve per step; its first step is "
+                      "trapezoidal); generalized midpoint = the rule with "
+                      "weight Theta, one linear solve per step; thesis = the "
                       "initial-strain scheme of thesis §3.9 (creep from the "
                       "average of start- and end-of-step stress, the "
                       "elastic operator, fixed-point iteration; it converges "
@@ -87,9 +92,9 @@ namespace lithostress
     prm.declare_entry("Theta",
                       "1",
                       Patterns::Double(0.5, 1),
-                      "Weight of the end-of-step stress in the implicit "
-                      "scheme: 1 = backward Euler (first order, L-stable), "
-                      "0.5 = trapezoidal rule (second order).");
+                      "Weight of the end-of-step stress in the generalized "
+                      "midpoint scheme: 1 = backward Euler (first order, "
+                      "L-stable), 0.5 = trapezoidal rule (second order).");
     prm.declare_entry("Fixed point tolerance",
                       "1e-6",
                       Patterns::Double(0),
@@ -125,21 +130,24 @@ namespace lithostress
   TimeStepping::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time stepping");
-    enabled      = prm.get_bool("Enabled");
-    unit_name    = prm.get("Time unit");
-    unit         = unit_name == "s"       ? 1.0
-                   : unit_name == "years" ? seconds_per_year
-                   : unit_name == "kyr"   ? 1e3 * seconds_per_year
-                                          : 1e6 * seconds_per_year;
-    end_time     = prm.get_double("End time") * unit;
-    first_step   = prm.get_double("First time step") * unit;
-    minimum_step = prm.get_double("Minimum time step") * unit;
-    maximum_step = prm.get_double("Maximum time step") * unit;
-    adaptive     = prm.get_bool("Adaptive time steps");
-    tolerance    = prm.get_double("Creep strain tolerance");
-    scheme = prm.get("Scheme") == "thesis" ? Scheme::thesis : Scheme::implicit;
-    theta  = prm.get_double("Theta");
-    fixed_point_tolerance = prm.get_double("Fixed point tolerance");
+    enabled                       = prm.get_bool("Enabled");
+    unit_name                     = prm.get("Time unit");
+    unit                          = unit_name == "s"       ? 1.0
+                                    : unit_name == "years" ? seconds_per_year
+                                    : unit_name == "kyr" ? 1e3 * seconds_per_year
+                                                         : 1e6 * seconds_per_year;
+    end_time                      = prm.get_double("End time") * unit;
+    first_step                    = prm.get_double("First time step") * unit;
+    minimum_step                  = prm.get_double("Minimum time step") * unit;
+    maximum_step                  = prm.get_double("Maximum time step") * unit;
+    adaptive                      = prm.get_bool("Adaptive time steps");
+    tolerance                     = prm.get_double("Creep strain tolerance");
+    const std::string scheme_name = prm.get("Scheme");
+    scheme                        = scheme_name == "thesis" ? Scheme::thesis
+                                    : scheme_name == "BDF2" ? Scheme::bdf2
+                                                            : Scheme::midpoint;
+    theta                         = prm.get_double("Theta");
+    fixed_point_tolerance         = prm.get_double("Fixed point tolerance");
     fixed_point_max_iterations =
       prm.get_integer("Maximum fixed point iterations");
     refinement_interval     = prm.get_integer("Refinement interval");

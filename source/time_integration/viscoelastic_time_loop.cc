@@ -55,24 +55,25 @@ namespace lithostress
     StressModel<dim>     &model = *sim.stress_model;
     const double          h     = t_new - t;
     const bool thesis = settings.scheme == TimeStepping::Scheme::thesis;
+    double     weight = 0;
     {
       TimerOutput::Scope timer(*sim.timer, "creep update");
       creep.keep_start();
       start_solution = sim.solution;
-      creep.begin_step(sim.dof_handler,
-                       *sim.fe_space,
-                       model,
-                       sim.solution,
-                       h,
-                       settings.theta,
-                       thesis);
+      weight         = creep.begin_step(sim.dof_handler,
+                                *sim.fe_space,
+                                model,
+                                sim.solution,
+                                h,
+                                settings.scheme,
+                                settings.theta);
     }
     sim.time           = t_new;
     sim.history_strain = &creep.history_strain();
     typename CreepIntegrator<dim>::Increment increment;
     if (!thesis)
       {
-        model.set_time_step(h, settings.theta);
+        model.set_time_step(h, weight);
         record.linear_iterations += solve_system(false);
         record.nonlinear_iterations = 1;
         TimerOutput::Scope timer(*sim.timer, "creep update");
@@ -110,7 +111,7 @@ namespace lithostress
                         << settings.fixed_point_tolerance
                         << "); shorten the step (Time stepping/Creep strain "
                            "tolerance or Maximum time step) or use Scheme = "
-                           "implicit. The results up to t = "
+                           "BDF2. The results up to t = "
                         << settings.format(t) << " are complete.";
                 throw ComputationError(message.str());
               }
@@ -143,9 +144,8 @@ namespace lithostress
   {
     CreepIntegrator<dim> &creep = *sim.creep;
     sim.refine_mesh("the mesh of step " + std::to_string(step),
-                    [&]() { creep.creep_strain().prepare_for_mesh_change(); });
-    creep.creep_strain().finish_mesh_change();
-    creep.setup_step_fields();
+                    [&]() { creep.prepare_for_mesh_change(); });
+    creep.finish_mesh_change();
     // Equilibrium on the new mesh for the transferred creep strain at the
     // current time: the elastic moduli with the creep strain as initial
     // strain.
@@ -259,8 +259,7 @@ namespace lithostress
       }
     --sim.cycle;
     ++linear_solves;
-    creep.creep_strain().setup();
-    creep.setup_step_fields();
+    creep.start_history();
     model.attach_creep_strain(&creep.creep_strain());
     if (settings.output_at_zero)
       write_output(0);
@@ -319,8 +318,10 @@ namespace lithostress
       state << "lithostress-checkpoint 1\n"
             << "step " << step << "\ntime " << exact(t) << "\ndt " << exact(dt)
             << "\nstrain_scale " << exact(strain_scale) << "\nstress_scale "
-            << exact(stress_scale) << "\nlinear_solves " << linear_solves
-            << "\nrecords " << sim.solution_output.records.size() << '\n';
+            << exact(stress_scale) << "\nprevious_dt "
+            << exact(sim.creep->previous_step_length()) << "\nlinear_solves "
+            << linear_solves << "\nrecords "
+            << sim.solution_output.records.size() << '\n';
       for (const auto &[time, file] : sim.solution_output.records)
         state << exact(time) << ' ' << file << '\n';
       state << "steps " << steps.size() << '\n';
@@ -380,6 +381,8 @@ namespace lithostress
     strain_scale = number();
     expect("stress_scale");
     stress_scale = number();
+    expect("previous_dt");
+    const double previous_dt = number();
     expect("linear_solves");
     in >> linear_solves;
     expect("records");
@@ -420,7 +423,7 @@ namespace lithostress
     sim.time = t;
     model.set_time_step(0, settings.theta);
     sim.setup_dofs();
-    creep.load_from_checkpoint();
+    creep.load_from_checkpoint(previous_dt);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
                                   displacement(sim.dof_handler);
     TrilinosWrappers::MPI::Vector owned(sim.system.locally_owned,
@@ -440,6 +443,19 @@ namespace lithostress
   }
 
   template <int dim>
+  double
+  ViscoelasticTimeLoop<dim>::step_limit(const double proposed) const
+  {
+    // Variable-step BDF2 is zero-stable for step ratios below 1 + √2:
+    // after a short step (one that landed on an output time) the steps
+    // grow back by doublings.
+    const double previous = sim.creep->previous_step_length();
+    if (settings.scheme == TimeStepping::Scheme::bdf2 && previous > 0)
+      return std::min(proposed, 2 * previous);
+    return proposed;
+  }
+
+  template <int dim>
   void
   ViscoelasticTimeLoop<dim>::run()
   {
@@ -449,7 +465,9 @@ namespace lithostress
             << " s; every output time in s), "
             << (settings.scheme == TimeStepping::Scheme::thesis
                   ? std::string("thesis initial-strain scheme")
-                  : "implicit scheme, theta = " +
+                : settings.scheme == TimeStepping::Scheme::bdf2
+                  ? std::string("BDF2")
+                  : "generalized midpoint rule, theta = " +
                       std::to_string(settings.theta))
             << '\n';
     sim.keep_solver_setup = true;
@@ -463,22 +481,25 @@ namespace lithostress
         sim.stop_if_requested("time step " + std::to_string(step + 1));
         StepRecord record;
         Timer      clock(sim.communicator, true);
-        double     t_new = settings.next_time(t, dt);
+        double     t_new = settings.next_time(t, step_limit(dt));
         while (!attempt_step(t_new, record))
           {
             ++record.rejected;
-            // The estimate grows as Δt²: aim at half the tolerance.
-            const double h = t_new - t;
-            dt             = h * std::max(0.1,
-                              std::sqrt(0.5 * settings.tolerance /
-                                        record.error_estimate));
+            // The estimate grows as Δt^(p+1) for a method of order p: aim
+            // at half the tolerance.
+            const double h     = t_new - t;
+            const double power = sim.creep->second_order_step() ? 3 : 2;
+            dt                 = h * std::max(0.1,
+                              std::pow(0.5 * settings.tolerance /
+                                         record.error_estimate,
+                                       1 / power));
             if (dt < settings.minimum_step)
               throw ComputationError(
                 "the time step from t = " + settings.format(t) +
                 " would have to be shorter than the Minimum time step (" +
                 settings.format(settings.minimum_step) +
                 ") to keep the creep-strain increment below the tolerance");
-            t_new = settings.next_time(t, dt);
+            t_new = settings.next_time(t, step_limit(dt));
           }
         record.dt    = t_new - t;
         t            = t_new;
@@ -486,11 +507,13 @@ namespace lithostress
         record.step  = ++step;
         record.dofs  = sim.dof_handler.n_dofs();
         record.cells = sim.triangulation.n_global_active_cells();
-        // Double the step while the estimate (∝ Δt²) stays below a quarter
-        // of the tolerance; otherwise keep it, so that the solver's set-up
-        // for the step stays valid.
+        // Double the step while the estimate (∝ Δt², or Δt³ for BDF2)
+        // stays below a quarter (an eighth) of the tolerance; otherwise
+        // keep it, so that the solver's set-up for the step stays valid.
+        const double growth_margin =
+          sim.creep->second_order_step() ? 0.125 : 0.25;
         if (settings.adaptive &&
-            record.error_estimate < 0.25 * settings.tolerance &&
+            record.error_estimate < growth_margin * settings.tolerance &&
             record.dt >= 0.99 * dt)
           dt *= 2;
         const int output = settings.output_index(t);

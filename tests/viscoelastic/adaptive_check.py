@@ -36,6 +36,7 @@ UNIFORM_FINE_CELLS = 1280
 
 out = os.path.abspath("output_cylinder_adaptive")
 run(PRM, out, 1, ["Convergence study/Points=" + "; ".join("%g, 0" % r for r in RADII),
+                  "Time stepping/Scheme=generalized midpoint",
                   "Time stepping/Theta=0.5",
                   "Time stepping/Creep strain tolerance=1e-3",
                   "Time stepping/Refinement interval=20",

@@ -1,5 +1,5 @@
 """Checkpoint and restart of the visco-elastic loop (issue 15, verification 5)
-on the cylinder of prm/viscoelastic_cylinder.prm (coarse mesh, 1e-3 step
+on the cylinder of prm/viscoelastic_cylinder.prm (coarse mesh, BDF2 with 1e-4 step
 tolerance, a checkpoint every 10 steps):
 
 1. an uninterrupted run on 1 rank is the reference;
@@ -25,7 +25,7 @@ from lithotest import BINARY, check, env, finish, read_csv, run  # noqa: E402
 
 PRM = os.path.join(os.path.dirname(os.path.dirname(HERE)), "prm", "viscoelastic_cylinder.prm")
 SETS = ["Mesh refinement/Initial global refinement=0",
-        "Time stepping/Creep strain tolerance=1e-3",
+        "Time stepping/Creep strain tolerance=1e-4",
         "Time stepping/Checkpoint interval=10",
         "Output/Write ParaView files=false",
         "Output/Figures/Enabled=false"]

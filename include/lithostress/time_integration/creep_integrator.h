@@ -8,6 +8,7 @@
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/materials/stress_model.h>
 #include <lithostress/time_integration/creep_strain.h>
+#include <lithostress/time_integration/time_stepping.h>
 
 #include <algorithm>
 #include <functional>
@@ -18,13 +19,17 @@ namespace lithostress
 
   /**
    * The update of the creep-strain history at the quadrature points in one
-   * time step (SPEC §3.3, doc/equations.md), for both integrators of
-   * TimeStepping:
-   * - implicit (generalised midpoint, weight θ): before the solve the
-   *   history strain c* = c_n + (1 − θ) Δt s_n/(2η) (begin_step()); the
-   *   solve uses the relaxed moduli and c*; after it
-   *   c_{n+1} = c* + θ Δt s_{n+1}/(2η) with s_{n+1} the deviator of the
-   *   step's stress (finish_implicit_step());
+   * time step (SPEC §3.3, doc/equations.md), for the integrators of
+   * TimeStepping. The implicit ones share one form: before the solve a
+   * history strain c* (begin_step()), the solve with the relaxed moduli
+   * G/(1 + w Δt/τ) and c* as initial strain, after it
+   * c_{n+1} = c* + w Δt s_{n+1}/(2η) with s_{n+1} the deviator of the
+   * step's stress (finish_implicit_step()):
+   * - BDF2 (variable step, ω = Δt_n/Δt_{n−1}):
+   *   c* = ((1+ω)² c_n − ω² c_{n−1})/(1+2ω), w = (1+ω)/(1+2ω); its first
+   *   step (no c_{n−1} yet) is a trapezoidal step;
+   * - generalised midpoint (weight θ): c* = c_n + (1 − θ) Δt s_n/(2η),
+   *   w = θ;
    * - thesis (§3.9): the elastic moduli with the history strain
    *   c_n + Δc, where Δc = Δt (s_n + s_{n+1})/(4η) is re-evaluated from
    *   each new solution (update_thesis_history()) until the stress stops
@@ -38,10 +43,13 @@ namespace lithostress
   public:
     /**
      * The size of a step's creep-strain change and its estimated local
-     * error, for the output and the step control. The local error of the
-     * step's creep increment is estimated as (Δt/2) ‖ċ_{n+1} − ċ_n‖, the
-     * difference between the first-order increment and one with the
-     * average rate (doc/equations.md).
+     * error, for the output and the step control (doc/equations.md). For
+     * a first-order step the local error of the creep increment is
+     * estimated as (Δt/2) ‖ċ_{n+1} − ċ_n‖, the difference between the
+     * first-order increment and one with the average rate; for a BDF2 step
+     * as (8/5) ‖c_{n+1} − c_n − (Δt/2)(ċ_n + ċ_{n+1})‖, its difference
+     * from the trapezoidal rule scaled by the ratio of the two methods'
+     * error constants (2/9 against 2/9 − 1/12), an O(Δt³) estimate.
      */
     struct Increment
     {
@@ -61,11 +69,15 @@ namespace lithostress
           const SymmetricTensor<2, 3> &rate_start,
           const SymmetricTensor<2, 3> &rate_end,
           const double                 tau,
-          const double                 dt)
+          const double                 dt,
+          const bool                   second_order = false)
       {
         creep_change = std::max(creep_change, (c_new - c_old).norm());
-        local_error =
-          std::max(local_error, 0.5 * dt * (rate_end - rate_start).norm());
+        local_error  = std::max(
+          local_error,
+          second_order
+             ? 1.6 * (c_new - c_old - 0.5 * dt * (rate_start + rate_end)).norm()
+             : 0.5 * dt * (rate_end - rate_start).norm());
         elastic_strain = std::max(elastic_strain, tau * rate_end.norm());
       }
 
@@ -99,25 +111,57 @@ namespace lithostress
       return history;
     }
 
-    /** Attach the creep strain and the start rate to the triangulation's
-     * next save() (collective). */
+    /** Attach the creep strain, the start rate and the previous step's
+     * creep strain to the triangulation's next save() (collective). */
     void
     prepare_for_checkpoint()
     {
       creep.prepare_for_checkpoint();
       start_rate.prepare_for_checkpoint();
+      previous.prepare_for_checkpoint();
     }
 
     /** After triangulation.load(): read them back (in the order of
-     * prepare_for_checkpoint()) and size the work fields. */
+     * prepare_for_checkpoint()) and size the work fields; @p previous_dt
+     * is the length of the step before (0: none), from the checkpoint's
+     * state. */
     void
-    load_from_checkpoint()
+    load_from_checkpoint(const double previous_dt)
     {
       creep.load_from_checkpoint();
       start_rate.load_from_checkpoint();
+      previous.load_from_checkpoint();
       history.setup();
       end_rate.setup();
       start_rate_current = true;
+      previous_step      = previous_dt;
+    }
+
+    /** Before the triangulation is refined or coarsened: attach the fields
+     * the next step needs (c_n and c_{n−1}); collective. */
+    void
+    prepare_for_mesh_change()
+    {
+      creep.prepare_for_mesh_change();
+      previous.prepare_for_mesh_change();
+    }
+
+    /** After it: transfer them and size the work fields; the start rate is
+     * computed anew. */
+    void
+    finish_mesh_change()
+    {
+      creep.finish_mesh_change();
+      previous.finish_mesh_change();
+      setup_step_fields();
+    }
+
+    /** The length of the last accepted step (0 before the first), which
+     * BDF2 needs with c_{n−1}; kept in checkpoints. */
+    double
+    previous_step_length() const
+    {
+      return previous_step;
     }
 
     /** Remember the creep strain c_n at the start of a step. */
@@ -134,25 +178,41 @@ namespace lithostress
       creep.assign(start_values);
     }
 
-    /** Size the step's work fields for the current mesh (after setup() or
-     * a transfer of the creep strain): the start rate is computed anew. */
+    /** A history of zero creep on the current mesh, before the first
+     * step (no previous step). */
+    void
+    start_history();
+
+    /** Size the step's work fields for the current mesh: the start rate
+     * is computed anew. */
     void
     setup_step_fields();
 
     /**
      * Begin a step of length @p dt from the solution @p solution (with the
      * creep strain c_n): the start rate s_n/(2η) and the history strain c*
-     * of the implicit scheme with weight @p theta, or the thesis scheme's
-     * explicit predictor c_n + Δt s_n/(2η) if @p thesis.
+     * of @p scheme (for the generalised midpoint rule with weight
+     * @p theta), or the thesis scheme's explicit predictor
+     * c_n + Δt s_n/(2η). Returns the weight w of the step's relaxed moduli
+     * G/(1 + w Δt/τ) (for the thesis scheme: 0, the elastic moduli).
      */
-    void
+    double
     begin_step(const DoFHandler<dim>               &dof_handler,
                const FiniteElementSpace<dim>       &fe_space,
                const StressModel<dim>              &stress_model,
                const TrilinosWrappers::MPI::Vector &solution,
                const double                         dt,
-               const double                         theta,
-               const bool                           thesis);
+               const TimeStepping::Scheme           scheme,
+               const double                         theta);
+
+    /** Whether the step of begin_step() is a second-order BDF2 step (its
+     * local error ∝ Δt³; the start step of BDF2 is estimated as first
+     * order). */
+    bool
+    second_order_step() const
+    {
+      return bdf2_step;
+    }
 
     /** End an implicit step with the new solution: c_{n+1} from the step
      * stress (the stress model's step moduli must be those of the step). */
@@ -185,6 +245,8 @@ namespace lithostress
     {
       start_rate.swap_values(end_rate);
       start_rate_current = true;
+      previous.assign(start_values);
+      previous_step = step;
     }
 
   private:
@@ -213,13 +275,17 @@ namespace lithostress
     all_ranks(const Increment &increment) const;
 
 
-    CreepStrain<dim> creep, history, start_rate, end_rate;
+    /** c_n, the step's history strain c*, the rates at the start and end
+     * of the step, and c_{n−1}. */
+    CreepStrain<dim> creep, history, start_rate, end_rate, previous;
     /** Whether start_rate belongs to the current creep strain and
      * solution (false after a mesh change). */
     bool                                  start_rate_current = false;
     typename CreepStrain<dim>::VectorType start_values;
-    /** The step length of begin_step(). */
-    double step = 0;
+    /** The step length of begin_step(), and of the last accepted step. */
+    double step = 0, previous_step = 0;
+    /** Whether the step of begin_step() is a BDF2 step. */
+    bool bdf2_step = false;
   };
 } // namespace lithostress
 

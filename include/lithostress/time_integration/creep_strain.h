@@ -143,6 +143,19 @@ namespace lithostress
       field.update_ghost_values();
     }
 
+    /** This field := @p fa × @p a + @p fb × @p b (fields on the same
+     * mesh), ghosts exchanged. */
+    void
+    set_to_combination(const double            fa,
+                       const CreepStrain<dim> &a,
+                       const double            fb,
+                       const CreepStrain<dim> &b)
+    {
+      field.equ(fa, a.field);
+      field.add(fb, b.field);
+      field.update_ghost_values();
+    }
+
     /** Exchange the values with @p other (a field on the same mesh). */
     void
     swap_values(CreepStrain<dim> &other)

@@ -16,13 +16,14 @@ namespace lithostress
    * is in seconds), the end time, the integrator, the step-size control and
    * the output times, which steps land on exactly.
    *
-   * Step-size control: after a step the estimate of its local error,
-   * (Δt/2) max‖ċ_{n+1} − ċ_n‖ relative to the largest elastic deviatoric
-   * strain max‖s/(2G)‖ (Δt²/(2τ²) for a relaxing Maxwell element), is
-   * compared with the tolerance: above it the step is repeated with a
-   * shorter one, below a quarter of it the step doubles. Keeping the step
-   * otherwise unchanged lets the solver reuse its set-up (the relaxed
-   * moduli depend on the step).
+   * Step-size control: after a step the estimate of its local error
+   * (CreepIntegrator::Increment: (Δt/2) max‖ċ_{n+1} − ċ_n‖ for a
+   * first-order step, an O(Δt³) estimate for BDF2) relative to the largest
+   * elastic deviatoric strain max‖s/(2G)‖ is compared with the tolerance:
+   * above it the step is repeated with a shorter one, below a quarter (an
+   * eighth for BDF2) of it the step doubles. Keeping the step otherwise
+   * unchanged lets the solver reuse its set-up (the relaxed moduli depend
+   * on the step).
    */
   class TimeStepping
   {
@@ -30,9 +31,12 @@ namespace lithostress
     /** The time integrator (doc/equations.md). */
     enum class Scheme
     {
+      /** Variable-step BDF2 with the relaxed tangent (the default): second
+       * order, L-stable, one linear solve per step. */
+      bdf2,
       /** Generalised midpoint rule with the relaxed tangent: one linear
-       * solve per step (θ = 1 backward Euler by default). */
-      implicit,
+       * solve per step (θ = 1 backward Euler, θ = 1/2 trapezoidal). */
+      midpoint,
       /** The thesis's initial-strain scheme (§3.9): the creep increment
        * from the average of start- and end-of-step stress, the elastic
        * operator, fixed-point iteration per step. */
@@ -75,7 +79,7 @@ namespace lithostress
     /** Output times [s], ascending, each in (0, end]; 0 is kept separately. */
     std::vector<double> output_times;
     bool                output_at_zero             = true;
-    Scheme              scheme                     = Scheme::implicit;
+    Scheme              scheme                     = Scheme::bdf2;
     double              theta                      = 1;
     double              fixed_point_tolerance      = 1e-6;
     unsigned int        fixed_point_max_iterations = 50;

@@ -60,6 +60,11 @@ namespace lithostress
     bool
     attempt_step(const double t_new, StepRecord &record);
 
+    /** The step to take when the controller proposes @p proposed: BDF2
+     * steps grow by at most a factor 2 (its zero-stability). */
+    double
+    step_limit(const double proposed) const;
+
     /** Refine and coarsen, transfer the creep strain, and re-establish
      * equilibrium on the new mesh at the current time. */
     void
