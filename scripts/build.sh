@@ -1,6 +1,7 @@
 #!/bin/bash
 # Configure (once) and build lithostress: scripts/build.sh <dir> <Debug|Release>
-# (LITHOSTRESS_SANITIZE=ON in the environment: with ASan + UBSan)
+# (LITHOSTRESS_SANITIZE=ON in the environment: with ASan + UBSan;
+# LITHOSTRESS_SIMD=AVX2 or AVX512: the vectorised matrix-free operator)
 set -euo pipefail
 dir=${1:-build}
 type=${2:-Release}
@@ -8,9 +9,12 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 mkdir -p "$root/$dir"
 cd "$root/$dir"
 sanitize=${LITHOSTRESS_SANITIZE:-OFF}
+simd=${LITHOSTRESS_SIMD:-OFF}
 if [ ! -f CMakeCache.txt ] || ! grep -q "CMAKE_BUILD_TYPE:STRING=$type" CMakeCache.txt ||
-   ! grep -q "LITHOSTRESS_SANITIZE:BOOL=$sanitize" CMakeCache.txt; then
-  cmake -DCMAKE_BUILD_TYPE="$type" -DLITHOSTRESS_SANITIZE="$sanitize" "$root" >/dev/null
+   ! grep -q "LITHOSTRESS_SANITIZE:BOOL=$sanitize" CMakeCache.txt ||
+   ! grep -q "LITHOSTRESS_SIMD:STRING=$simd" CMakeCache.txt; then
+  cmake -DCMAKE_BUILD_TYPE="$type" -DLITHOSTRESS_SANITIZE="$sanitize" \
+        -DLITHOSTRESS_SIMD="$simd" "$root" >/dev/null
 fi
 # Build every target (the program and the unit-test programs); progress
 # lines are filtered, a failing build still fails this script (pipefail).

@@ -279,23 +279,34 @@ namespace lithostress
     // η_K > t where t is the largest value with Σ_{η_K > t} η_K² ≥ θ Σ η_K²;
     // coarsen the cells with η_K < s, s the largest value with
     // Σ_{η_K < s} η_K² ≤ θ_c Σ η_K². Only sums are communicated.
+    // Cells at the Maximum level cannot be refined: the refinement
+    // threshold is chosen among the others (else, once the cells at a
+    // singularity reach that level, they would hold the fraction and
+    // nothing would be refined any more).
     const MPI_Comm comm  = tria.get_communicator();
     double         total = 0, largest = 0;
+    double         refinable  = 0;
+    auto           can_refine = [&](const auto &cell) {
+      return static_cast<unsigned int>(cell->level()) < max_level;
+    };
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const double e = eta(cell->active_cell_index());
           total += e * e;
           largest = std::max(largest, e);
+          if (can_refine(cell))
+            refinable += e * e;
         }
-    total   = Utilities::MPI::sum(total, comm);
-    largest = Utilities::MPI::max(largest, comm);
+    total     = Utilities::MPI::sum(total, comm);
+    refinable = Utilities::MPI::sum(refinable, comm);
+    largest   = Utilities::MPI::max(largest, comm);
     if (!(total > 0))
       return;
-    auto sum_above = [&](const double t) {
+    auto sum_above = [&](const double t, const bool only_refinable) {
       double sum = 0;
       for (const auto &cell : tria.active_cell_iterators())
-        if (cell->is_locally_owned())
+        if (cell->is_locally_owned() && (!only_refinable || can_refine(cell)))
           {
             const double e = eta(cell->active_cell_index());
             if (e > t)
@@ -304,13 +315,13 @@ namespace lithostress
       return Utilities::MPI::sum(sum, comm);
     };
     double refine_threshold = largest;
-    if (refine_fraction > 0)
+    if (refine_fraction > 0 && refinable > 0)
       {
         double lo = 0, hi = largest;
         for (unsigned int it = 0; it < 60; ++it)
           {
             const double mid = 0.5 * (lo + hi);
-            if (sum_above(mid) >= refine_fraction * total)
+            if (sum_above(mid, true) >= refine_fraction * refinable)
               lo = mid;
             else
               hi = mid;
@@ -324,7 +335,7 @@ namespace lithostress
         for (unsigned int it = 0; it < 60; ++it)
           {
             const double mid = 0.5 * (lo + hi);
-            if (total - sum_above(mid) <= coarsen_fraction * total)
+            if (total - sum_above(mid, false) <= coarsen_fraction * total)
               lo = mid;
             else
               hi = mid;
@@ -338,7 +349,8 @@ namespace lithostress
           // Cells within a relative 1e-6 of the threshold are treated
           // alike: indicators of mirror-symmetric cells differ only by
           // round-off, which depends on the partition.
-          if (refine_fraction > 0 && e > refine_threshold * (1 - 1e-6))
+          if (refine_fraction > 0 && can_refine(cell) &&
+              e > refine_threshold * (1 - 1e-6))
             cell->set_refine_flag();
           else if (e < coarsen_threshold * (1 - 1e-6))
             cell->set_coarsen_flag();

@@ -9,6 +9,7 @@
 #include <deal.II/multigrid/mg_transfer_matrix_free.h>
 
 #include <lithostress/base/input_error.h>
+#include <lithostress/solvers/active_operator.h>
 #include <lithostress/solvers/coarse_grid_solver.h>
 #include <lithostress/solvers/multigrid_preconditioner.h>
 
@@ -172,7 +173,7 @@ namespace lithostress
     {
     public:
       using Settings       = typename MatrixFreeMultigridSolver<dim>::Settings;
-      using SystemOperator = ElasticOperator<dim, degree, double>;
+      using SystemOperator = ActiveOperator<dim>;
       using VectorType     = LinearAlgebra::distributed::Vector<double>;
 
       SolverReport
@@ -221,19 +222,14 @@ namespace lithostress
       // The operator on the active mesh (double precision).
       if (!reuse)
         {
-          system_operator = std::make_unique<SystemOperator>();
-          typename MatrixFree<dim, double>::AdditionalData data;
-          multigrid_tools::set_operator_flags(data, springs);
-          auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
-          matrix_free->reinit(problem.fe_space.mapping(),
-                              dof_handler,
-                              problem.system.constraints,
-                              QGauss<1>(degree + 1),
-                              data);
-          system_operator->initialize(matrix_free);
-          system_operator->set_cell_moduli(
-            multigrid_tools::material_moduli(problem));
-          system_operator->set_vertical_springs(springs);
+          system_operator =
+            make_active_operator<dim, degree>(problem.fe_space.mapping(),
+                                              dof_handler,
+                                              problem.system.constraints,
+                                              multigrid_tools::material_moduli(
+                                                problem),
+                                              springs,
+                                              vectorized_operator_built());
         }
       report.phases.emplace_back("matrix-free set-up (active mesh)",
                                  timer.wall_time());

@@ -32,16 +32,27 @@ namespace lithostress
    * precision and on every multigrid level (in single precision by
    * default); the diagonal, for the Chebyshev smoother, includes the
    * boundary term.
+   *
+   * @p VectorizedArrayType is deal.II's default SIMD batch of @p number
+   * everywhere but in the vectorised build (CMake option LITHOSTRESS_SIMD,
+   * solvers/active_operator_simd.cc), whose active-mesh operator batches
+   * 4 (AVX2) or 8 (AVX-512) cells.
    */
-  template <int dim, int fe_degree, typename number>
-  class ElasticOperator
-      : public MatrixFreeOperators::
-          Base<dim, LinearAlgebra::distributed::Vector<number>>
+  template <int dim,
+            int fe_degree,
+            typename number,
+            typename VectorizedArrayType = VectorizedArray<number>>
+  class ElasticOperator : public MatrixFreeOperators::Base<
+                            dim,
+                            LinearAlgebra::distributed::Vector<number>,
+                            VectorizedArrayType>
   {
   public:
-    using VectorType   = LinearAlgebra::distributed::Vector<number>;
-    using Base         = MatrixFreeOperators::Base<dim, VectorType>;
-    using CellIterator = typename DoFHandler<dim>::cell_iterator;
+    using VectorType = LinearAlgebra::distributed::Vector<number>;
+    using Base =
+      MatrixFreeOperators::Base<dim, VectorType, VectorizedArrayType>;
+    using MatrixFreeType = MatrixFree<dim, number, VectorizedArrayType>;
+    using CellIterator   = typename DoFHandler<dim>::cell_iterator;
 
     /** Moduli of the cell @p cell (a level or active cell iterator). */
     using CellModuli = std::function<LameParameters(const CellIterator &cell)>;
@@ -85,13 +96,13 @@ namespace lithostress
     apply_add(VectorType &dst, const VectorType &src) const override;
 
     void
-    local_apply_cell(const MatrixFree<dim, number>               &data,
+    local_apply_cell(const MatrixFreeType                        &data,
                      VectorType                                  &dst,
                      const VectorType                            &src,
                      const std::pair<unsigned int, unsigned int> &range) const;
 
     void
-    local_apply_inner_face(const MatrixFree<dim, number> &,
+    local_apply_inner_face(const MatrixFreeType &,
                            VectorType &,
                            const VectorType &,
                            const std::pair<unsigned int, unsigned int> &) const
@@ -100,7 +111,7 @@ namespace lithostress
 
     void
     local_apply_boundary(
-      const MatrixFree<dim, number>               &data,
+      const MatrixFreeType                        &data,
       VectorType                                  &dst,
       const VectorType                            &src,
       const std::pair<unsigned int, unsigned int> &range) const;
@@ -126,10 +137,10 @@ namespace lithostress
     number
     spring_stiffness(const types::boundary_id id) const;
 
-    AlignedVector<VectorizedArray<number>> lambda_cell, mu_cell;
-    Table<2, VectorizedArray<number>>      lambda_point, mu_point;
-    bool                                   moduli_at_points = false;
-    std::map<types::boundary_id, double>   springs;
+    AlignedVector<VectorizedArrayType>   lambda_cell, mu_cell;
+    Table<2, VectorizedArrayType>        lambda_point, mu_point;
+    bool                                 moduli_at_points = false;
+    std::map<types::boundary_id, double> springs;
   };
 } // namespace lithostress
 
