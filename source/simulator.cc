@@ -62,6 +62,7 @@ namespace lithostress
     GeometrySelector<dim>::declare_parameters(prm);
     MaterialLibrary::declare_parameters(prm, first_pass);
     PrescribedDisplacement<dim>::declare_parameters(prm, first_pass);
+    FaultInterface<dim>::declare_parameters(prm, first_pass);
     LoadCollection<dim>::declare_parameters(prm, first_pass);
     MeshRefinement<dim>::declare_parameters(prm);
     LinearSolverSelector<dim>::declare_parameters(prm);
@@ -168,9 +169,15 @@ namespace lithostress
         for (const auto &face : cell->face_iterators())
           curved = curved || face->manifold_id() != numbers::flat_manifold_id;
       }
+    faults.parse_parameters(prm, geometry->fault_traces(), length_scale);
+    if (faults.active() && degree > 2)
+      throw_input_error("Discretization/Polynomial degree",
+                        "faults are implemented for degrees 1 and 2");
+    // One displacement field per side of a fault.
     fe_space =
       std::make_unique<FiniteElementSpace<dim>>(degree,
-                                                curved ? mapping_degree : 1);
+                                                curved ? mapping_degree : 1,
+                                                faults.active() ? 2 : 1);
 
     // Every material id and boundary part of the coarse mesh (the same on
     // all ranks).
@@ -267,16 +274,24 @@ namespace lithostress
   Simulator<dim>::check_well_posed(const std::string &length_unit)
   {
     // Rigid-body motions on the coarse mesh, where the test is exact.
+    faults.set_active_fe_indices(dof_handler);
     dof_handler.distribute_dofs(fe_space->fe_collection());
     IndexSet relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
     AffineConstraints<double> constraints(relevant);
     on_all_ranks(communicator, [&]() {
       prescribed_displacement.apply(dof_handler, *fe_space, constraints);
+      faults.add_constraints(dof_handler, *fe_space, constraints);
     });
     constraints.close();
-    RigidBodySupport<dim>::check(
-      dof_handler, *fe_space, constraints, loads, length_scale, length_unit);
+    RigidBodySupport<dim>::check(dof_handler,
+                                 *fe_space,
+                                 constraints,
+                                 loads,
+                                 length_scale,
+                                 length_unit,
+                                 faults.interface_points(dof_handler,
+                                                         *fe_space));
 
     // The first mesh, and with global refinement the last one, must fit
     // in memory. DoFs grow with the cells in the interior (dim p^dim per
@@ -353,6 +368,7 @@ namespace lithostress
       stop_if_requested("set-up (" + name + ")");
       part.restart();
     };
+    faults.set_active_fe_indices(dof_handler);
     dof_handler.distribute_dofs(fe_space->fe_collection());
     phase_done("DoFs");
     linear_solver->prepare_dof_handler(dof_handler);
@@ -362,7 +378,12 @@ namespace lithostress
                                             system.locally_relevant);
     make_constraints();
     phase_done("constraints");
-    system.reinit(dof_handler, communicator, linear_solver->needs_matrix());
+    system.reinit(dof_handler,
+                  communicator,
+                  linear_solver->needs_matrix(),
+                  faults.has_face_terms() && linear_solver->needs_matrix()
+                    ? faults.interface_cliques(dof_handler)
+                    : std::vector<std::vector<types::global_dof_index>>());
     ++mesh_version;
     phase_done("sparsity pattern and matrix");
     // The previous mesh's solution; solve() sizes it anew.
@@ -384,6 +405,7 @@ namespace lithostress
                                     *fe_space,
                                     system.constraints,
                                     time);
+      faults.add_constraints(dof_handler, *fe_space, system.constraints);
     });
     system.constraints.close();
   }
@@ -410,6 +432,11 @@ namespace lithostress
     const bool with_matrix =
       linear_solver->needs_matrix() && matrix_version != operator_version();
     assembler.assemble(dof_handler, system, with_matrix);
+    if (with_matrix)
+      faults.assemble(dof_handler,
+                      *fe_space,
+                      system.constraints,
+                      system.matrix);
     if (with_matrix)
       matrix_version = operator_version();
     statistics.assemble_time = clock.wall_time();

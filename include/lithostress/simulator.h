@@ -13,6 +13,7 @@
 #include <lithostress/boundary_conditions/prescribed_displacement.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
+#include <lithostress/faults/fault_interface.h>
 #include <lithostress/geometry/geometry_model.h>
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/elastic_moduli.h>
@@ -168,6 +169,7 @@ namespace lithostress
     std::unique_ptr<ReferenceSolution<dim>>   reference;
     LoadCollection<dim>                       loads;
     PrescribedDisplacement<dim>               prescribed_displacement;
+    FaultInterface<dim>                       faults;
     std::unique_ptr<StressModel<dim>>         stress_model;
     std::unique_ptr<FiniteElementSpace<dim>>  fe_space;
     DoFHandler<dim>                           dof_handler;

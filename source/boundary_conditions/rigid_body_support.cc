@@ -34,12 +34,14 @@ namespace lithostress
 
   template <int dim>
   void
-  RigidBodySupport<dim>::check(const DoFHandler<dim>           &dof_handler,
-                               const FiniteElementSpace<dim>   &fe_space,
-                               const AffineConstraints<double> &constraints,
-                               const LoadCollection<dim>       &loads,
-                               const double                     length_scale,
-                               const std::string               &length_unit)
+  RigidBodySupport<dim>::check(
+    const DoFHandler<dim>                            &dof_handler,
+    const FiniteElementSpace<dim>                    &fe_space,
+    const AffineConstraints<double>                  &constraints,
+    const LoadCollection<dim>                        &loads,
+    const double                                      length_scale,
+    const std::string                                &length_unit,
+    const std::vector<std::pair<Point<dim>, double>> &interface_points)
   {
     static_assert(dim == 2, "rigid-body modes are written for 2-D");
     const MPI_Comm     comm      = dof_handler.get_communicator();
@@ -179,6 +181,15 @@ namespace lithostress
                     }
                 }
       }
+    // ... and from elastic faults: the relative motion of the two fields.
+    if (fe_space.n_fields() == 2)
+      for (const auto &[x, weight] : interface_points)
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int k = 0; k < n_modes; ++k)
+            for (unsigned int l = 0; l < n_modes; ++l)
+              G(k, l) += weight / size *
+                         (mode_value(1, d, x, k) - mode_value(0, d, x, k)) *
+                         (mode_value(1, d, x, l) - mode_value(0, d, x, l));
     Utilities::MPI::sum(G, comm, G);
 
     // The free motions: the null space of G.

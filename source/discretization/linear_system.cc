@@ -5,9 +5,11 @@ namespace lithostress
 {
   template <int dim>
   void
-  LinearSystem<dim>::reinit(const DoFHandler<dim> &dof_handler,
-                            const MPI_Comm         communicator,
-                            const bool             with_matrix)
+  LinearSystem<dim>::reinit(
+    const DoFHandler<dim>                                   &dof_handler,
+    const MPI_Comm                                           communicator,
+    const bool                                               with_matrix,
+    const std::vector<std::vector<types::global_dof_index>> &interface_cliques)
   {
     rhs.reinit(locally_owned, communicator);
     matrix.clear();
@@ -17,6 +19,8 @@ namespace lithostress
     // more memory than the matrix keeps (doc/performance.md).
     CliqueSparsity sparsity(locally_owned, constraints);
     sparsity.add_cells(dof_handler);
+    for (const auto &clique : interface_cliques)
+      sparsity.add_clique(clique);
     sparsity.reinit_matrix(matrix, communicator);
   }
 

@@ -4,6 +4,7 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/geometry/rectangular_geometries.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lithostress
@@ -256,6 +257,21 @@ namespace lithostress
                       "10",
                       Patterns::Integer(),
                       "Coarse cells across the width.");
+    prm.declare_entry("Fault surface x",
+                      "",
+                      Patterns::Anything(),
+                      "x of the surface trace of a planar fault through the "
+                      "whole box [length unit]; empty = no fault. The "
+                      "fault's interface law is set in the `Faults` section "
+                      "under the name `fault`.");
+    prm.declare_entry("Fault dip",
+                      "63.43",
+                      Patterns::Double(),
+                      "Dip of the fault [degrees], in (0, 90].");
+    prm.declare_entry("Fault dips towards",
+                      "right",
+                      Patterns::Selection("right|left"),
+                      "The side the fault dips towards: its hanging wall.");
     prm.leave_subsection();
   }
 
@@ -273,7 +289,22 @@ namespace lithostress
     layer_names = split_list(prm.get("Layer names"));
     const auto counts =
       Utilities::string_to_int(split_list(prm.get("Cells per layer")));
-    cells_across = positive_count(prm, "Cells across", where);
+    cells_across              = positive_count(prm, "Cells across", where);
+    const std::string fault_x = Utilities::trim(prm.get("Fault surface x"));
+    with_fault                = !fault_x.empty();
+    if (with_fault)
+      {
+        fault.name = "fault";
+        fault.surface_x =
+          parse_number(fault_x, where + "Fault surface x") * scale;
+        const double dip_degrees = prm.get_double("Fault dip");
+        if (!(dip_degrees > 0 && dip_degrees <= 90))
+          throw_input_error(where + "Fault dip",
+                            "must lie in (0, 90] degrees, got " +
+                              prm.get("Fault dip"));
+        fault.dip       = dip_degrees * numbers::PI / 180;
+        fault.direction = prm.get("Fault dips towards") == "right" ? 1 : -1;
+      }
     prm.leave_subsection();
 
     const unsigned int n_layers = interfaces.size() - 1;
@@ -290,6 +321,20 @@ namespace lithostress
                         "needs one count per layer (" +
                           std::to_string(n_layers) + ")");
     cells_per_layer.assign(counts.begin(), counts.end());
+    if (with_fault)
+      {
+        fault.top_y = interfaces.front();
+        for (const double y : {interfaces.front(), interfaces.back()})
+          if (!(fault.x_at(y) > 0 && fault.x_at(y) < width))
+            throw_input_error(where + "Fault surface x",
+                              "the fault must cross the box from the top "
+                              "to the base, but it leaves it at y = " +
+                                std::to_string(y / scale) + " (x = " +
+                                std::to_string(fault.x_at(y) / scale) + ")");
+        if (cells_across < 2)
+          throw_input_error(where + "Cells across",
+                            "needs at least 2 cells for a fault");
+      }
   }
 
   template <int dim>
@@ -297,29 +342,82 @@ namespace lithostress
   LayeredBox<dim>::create_coarse_mesh(
     parallel::distributed::Triangulation<dim> &tria) const
   {
-    std::vector<std::vector<double>> steps(2);
-    steps[0].assign(cells_across, width / cells_across);
-    // Steps in y go from the base up.
+    // Rows of vertices from the base up.
+    std::vector<double> ys = {interfaces.back()};
     for (int layer = static_cast<int>(cells_per_layer.size()) - 1; layer >= 0;
          --layer)
       {
         const double thickness = interfaces[layer] - interfaces[layer + 1];
-        for (unsigned int c = 0; c < cells_per_layer[layer]; ++c)
-          steps[1].push_back(thickness / cells_per_layer[layer]);
+        for (unsigned int c = 1; c <= cells_per_layer[layer]; ++c)
+          ys.push_back(interfaces[layer + 1] +
+                       thickness * c / cells_per_layer[layer]);
       }
-    GridGenerator::subdivided_hyper_rectangle(tria,
-                                              steps,
-                                              Point<2>(0, interfaces.back()),
-                                              Point<2>(width,
-                                                       interfaces.front()),
-                                              true);
+    // Columns: uniform across the box, or, with a fault, n_left cells from
+    // x = 0 to the fault and the rest from the fault to W in every row, so
+    // that the fault is a column boundary.
+    unsigned int n_left = 0;
+    if (with_fault)
+      {
+        const double mid =
+          fault.x_at(0.5 * (interfaces.front() + interfaces.back()));
+        n_left = std::clamp<unsigned int>(static_cast<unsigned int>(std::lround(
+                                            cells_across * mid / width)),
+                                          1,
+                                          cells_across - 1);
+      }
+    auto x_of = [&](const unsigned int i, const double y) {
+      if (!with_fault)
+        return width * i / cells_across;
+      const double xf = fault.x_at(y);
+      return i <= n_left
+               ? xf * i / n_left
+               : xf + (width - xf) * (i - n_left) / (cells_across - n_left);
+    };
+    const unsigned int       nx = cells_across + 1;
+    std::vector<Point<2>>    vertices;
+    std::vector<CellData<2>> cells;
+    for (const double y : ys)
+      for (unsigned int i = 0; i < nx; ++i)
+        vertices.emplace_back(x_of(i, y), y);
+    for (unsigned int j = 0; j + 1 < ys.size(); ++j)
+      for (unsigned int i = 0; i < cells_across; ++i)
+        {
+          CellData<2> cell;
+          cell.vertices = {j * nx + i,
+                           j * nx + i + 1,
+                           (j + 1) * nx + i,
+                           (j + 1) * nx + i + 1};
+          cells.push_back(cell);
+        }
+    tria.create_triangulation(vertices, cells, SubCellData());
+    const double tolerance = 1e-9 * width;
     for (const auto &cell : tria.active_cell_iterators())
       {
         const double y = cell->center()[1];
         for (unsigned int layer = 0; layer + 1 < interfaces.size(); ++layer)
           if (y < interfaces[layer] && y > interfaces[layer + 1])
             cell->set_material_id(layer);
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary())
+            {
+              const Point<2> c = face->center();
+              // The ids of GridGenerator's colorized rectangle.
+              face->set_boundary_id(
+                std::abs(c[1] - interfaces.back()) < tolerance    ? 2
+                : std::abs(c[1] - interfaces.front()) < tolerance ? 3
+                : c[0] < 0.5 * width                              ? 0
+                                                                  : 1);
+            }
       }
+  }
+
+  template <int dim>
+  std::vector<FaultTrace>
+  LayeredBox<dim>::fault_traces() const
+  {
+    if (!with_fault)
+      return {};
+    return {fault};
   }
 
   template <int dim>

@@ -67,6 +67,8 @@ expected = {
     "output_time_after_end": "Time stepping/Output times>: the time 4000 years is outside [0, End time]",
     "resume_without_checkpoint": "Time stepping/Resume>: there is no checkpoint",
     "resume_other_model": "checkpoint-000007 belongs to another model",
+    "fault_not_named": "Faults/Names>: the geometry has the fault <fault>: name it here",
+    "fault_outside_box": "Geometry/Layered box/Fault surface x>: the fault must cross the box from the top to the base",
     "rigid_edge_pinned_corner": "Boundary conditions/right/x>: is `rigid`, but another part already prescribes",
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",

@@ -40,15 +40,21 @@ namespace lithostress
      * and no spring holds it vertically", if @p constraints (closed, on the
      * DoFs of @p dof_handler) and the springs of @p loads leave a
      * rigid-body motion free. @p length_scale and @p length_unit give
-     * points (a centre of rotation) in the input's unit.
+     * points (a centre of rotation) in the input's unit. @p interface_points
+     * (quadrature points x with weights w, each rank its own) are where an
+     * elastic fault couples the two displacement fields: they add
+     * w |r_k(field 1, x) − r_k(field 0, x)|-forms to G, so a body held
+     * through the fault by the other is held.
      */
     static void
-    check(const DoFHandler<dim>           &dof_handler,
-          const FiniteElementSpace<dim>   &fe_space,
-          const AffineConstraints<double> &constraints,
-          const LoadCollection<dim>       &loads,
-          const double                     length_scale,
-          const std::string               &length_unit);
+    check(
+      const DoFHandler<dim>                            &dof_handler,
+      const FiniteElementSpace<dim>                    &fe_space,
+      const AffineConstraints<double>                  &constraints,
+      const LoadCollection<dim>                        &loads,
+      const double                                      length_scale,
+      const std::string                                &length_unit,
+      const std::vector<std::pair<Point<dim>, double>> &interface_points = {});
   };
 } // namespace lithostress
 

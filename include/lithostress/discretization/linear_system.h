@@ -22,11 +22,14 @@ namespace lithostress
   public:
     /** Build the sparsity pattern (with @p constraints already closed) and
      * size the matrix and vector. @p with_matrix = false leaves the matrix
-     * empty (for matrix-free solvers). */
+     * empty (for matrix-free solvers). @p interface_cliques are further
+     * groups of DoFs that couple with each other (a fault's face pairs). */
     void
     reinit(const DoFHandler<dim> &dof_handler,
            const MPI_Comm         communicator,
-           const bool             with_matrix = true);
+           const bool             with_matrix = true,
+           const std::vector<std::vector<types::global_dof_index>>
+             &interface_cliques = {});
 
     IndexSet                       locally_owned;
     IndexSet                       locally_relevant;

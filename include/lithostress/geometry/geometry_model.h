@@ -4,9 +4,12 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
+#include <lithostress/faults/fault_trace.h>
+
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lithostress
 {
@@ -44,6 +47,14 @@ namespace lithostress
      * (Gmsh physical groups, layers). */
     virtual std::map<std::string, types::material_id>
     named_regions() const
+    {
+      return {};
+    }
+
+    /** The faults the coarse mesh is built to follow (each a curve of
+     * cell faces through the whole model); none by default. */
+    virtual std::vector<FaultTrace>
+    fault_traces() const
     {
       return {};
     }

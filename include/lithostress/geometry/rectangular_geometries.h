@@ -89,7 +89,10 @@ namespace lithostress
   /**
    * A box x ∈ [0, W] made of horizontal layers between given interface
    * heights (top first), each layer a material id and a named region; the
-   * lithosphere columns of thesis chapters 6 and 7.
+   * lithosphere columns of thesis chapters 6 and 7. Optionally cut by a
+   * planar fault from the top to the base (thesis §6.1): the coarse cells
+   * are then trapezoids whose column boundary follows the fault, so that
+   * the fault is a curve of cell faces on every refinement.
    */
   template <int dim>
   class LayeredBox : public GeometryModel<dim>
@@ -106,6 +109,8 @@ namespace lithostress
     boundary_parts() const override;
     std::map<std::string, types::material_id>
     named_regions() const override;
+    std::vector<FaultTrace>
+    fault_traces() const override;
 
   private:
     double                    width;
@@ -113,6 +118,9 @@ namespace lithostress
     std::vector<std::string>  layer_names;
     std::vector<unsigned int> cells_per_layer;
     unsigned int              cells_across;
+    /** The planar fault through the box, if `Fault surface x` is set. */
+    bool       with_fault = false;
+    FaultTrace fault;
   };
 } // namespace lithostress
 

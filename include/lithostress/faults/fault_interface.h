@@ -1,0 +1,141 @@
+#ifndef lithostress_faults_fault_interface_h
+#define lithostress_faults_fault_interface_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/faults/fault_trace.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * The fault of a model (SPEC §3.4, thesis chapter 5) as an interface
+   * between two displacement fields: the footwall's cells carry field 0,
+   * the hanging wall's field 1 (FiniteElementSpace with two fields,
+   * FE_Nothing on the other side; DEALII-9.4.1-NOTES.md), so the
+   * displacement may jump across the fault's faces, and the interface law
+   * ties the two sides together.
+   *
+   * The `Faults` section names each fault of the geometry and gives its
+   * interface law. `elastic`: the traction K w with K = diag(k_s, k_n) per
+   * unit fault area [Pa/m] in the fault's (shear, normal) frame, a face
+   * term ∫ (v⁺ − v⁻)·K (u⁺ − u⁻) ds between the two fields (assemble()),
+   * integrated with the faces' Gauss points from whichever side is finer.
+   * `locked`: exact continuity by constraints
+   * (never a penalty): on fault faces of equal level the hanging wall's
+   * DoFs equal the footwall's; where one side is finer, its trace is
+   * constrained to the coarse side's polynomial (faces whose footwall side
+   * is finer: the coarse hanging-wall DoFs equal the coinciding footwall
+   * nodes, the footwall's other nodes the coarse trace's interpolation), so
+   * that every constraint points from the hanging wall, or from inside a
+   * fine footwall face, towards footwall nodes: no cycles, and the same
+   * constraints on every rank.
+   */
+  template <int dim>
+  class FaultInterface
+  {
+  public:
+    /** The interface law of a fault. */
+    enum class Law
+    {
+      locked,
+      elastic
+    };
+
+    /** Declare `Faults` with a subsection per name of `Faults/Names` in
+     * @p first_pass. */
+    static void
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
+
+    /** Read the section for the faults @p traces of the geometry: each must
+     * be named in `Faults/Names`, and each name must be a fault of the
+     * geometry; lengths are in units of @p length_scale metres. Throws
+     * InputError naming the entry. */
+    void
+    parse_parameters(ParameterHandler              &prm,
+                     const std::vector<FaultTrace> &traces,
+                     const double                   length_scale);
+
+    /** Whether the model has a fault (two displacement fields). */
+    bool
+    active() const
+    {
+      return !faults.empty();
+    }
+
+    /** Set each locally owned active cell's FE index: 0 in the footwall,
+     * 1 in the hanging wall (before DoFHandler::distribute_dofs). */
+    void
+    set_active_fe_indices(DoFHandler<dim> &dof_handler) const;
+
+    /** Add the interface constraints of locked faults to @p constraints
+     * (after the hanging-node and boundary constraints: a DoF that is
+     * already constrained keeps its constraint). */
+    void
+    add_constraints(const DoFHandler<dim>         &dof_handler,
+                    const FiniteElementSpace<dim> &fe_space,
+                    AffineConstraints<double>     &constraints) const;
+
+    /** Whether a fault adds face terms to the matrix (an elastic law). */
+    bool
+    has_face_terms() const;
+
+    /** The DoFs of each locally owned footwall cell together with those of
+     * its hanging-wall neighbours across fault faces with face terms: the
+     * extra couplings of the matrix's sparsity. */
+    std::vector<std::vector<types::global_dof_index>>
+    interface_cliques(const DoFHandler<dim> &dof_handler) const;
+
+    /** Quadrature points (with their JxW) of the fault faces with face
+     * terms whose footwall cell is locally owned: where an elastic fault
+     * holds one side against the other (RigidBodySupport). */
+    std::vector<std::pair<Point<dim>, double>>
+    interface_points(const DoFHandler<dim>         &dof_handler,
+                     const FiniteElementSpace<dim> &fe_space) const;
+
+    /** Add the face terms of elastic faults to @p matrix (compressed
+     * again afterwards), through @p constraints. */
+    void
+    assemble(const DoFHandler<dim>           &dof_handler,
+             const FiniteElementSpace<dim>   &fe_space,
+             const AffineConstraints<double> &constraints,
+             TrilinosWrappers::SparseMatrix  &matrix) const;
+
+  private:
+    struct Fault
+    {
+      FaultTrace trace;
+      Law        law = Law::locked;
+      /** k_s, k_n per unit fault area [Pa/m] (elastic law). */
+      double shear_stiffness = 0, normal_stiffness = 0;
+    };
+
+    /** Call @p pair(minus cell, face, plus cell, plus face, subface of the
+     * coarser side or invalid) for every fault face pair whose footwall
+     * cell is locally owned; the finer side's face is the one integrated
+     * over. */
+    void
+    for_each_face_pair(
+      const DoFHandler<dim> &dof_handler,
+      const std::function<
+        void(const typename DoFHandler<dim>::active_cell_iterator &minus,
+             const unsigned int                                    minus_face,
+             const unsigned int minus_subface,
+             const typename DoFHandler<dim>::active_cell_iterator &plus,
+             const unsigned int                                    plus_face,
+             const unsigned int plus_subface)> &pair) const;
+
+    std::vector<Fault> faults;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,42 @@
+#ifndef lithostress_faults_fault_trace_h
+#define lithostress_faults_fault_trace_h
+
+#include <deal.II/base/point.h>
+
+#include <string>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * The trace of a fault in the cross section (SPEC §3.4, thesis §6.1): a
+   * curve from the top surface through the whole model that separates it
+   * into a footwall and a hanging wall. Planar for now: through the
+   * surface point (x_s, y_top), dipping at the angle δ towards +x or −x, so
+   * x_f(y) = x_s ± (y_top − y)/tan δ. The hanging wall is the side the fault
+   * dips towards (it lies above the fault); the fault's jump is
+   * w = u(hanging wall) − u(footwall).
+   */
+  struct FaultTrace
+  {
+    /** The fault's name (its subsection of `Faults`). */
+    std::string name;
+    /** x of the surface trace and y of the top surface [m]. */
+    double surface_x = 0, top_y = 0;
+    /** Dip δ [rad], in (0, π/2]. */
+    double dip = 0;
+    /** +1 if the fault dips towards +x, −1 towards −x. */
+    int direction = 1;
+
+    /** x of the fault at height @p y. */
+    double
+    x_at(const double y) const;
+
+    /** Whether @p p lies in the hanging wall (else in the footwall). */
+    bool
+    in_hanging_wall(const Point<2> &p) const;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,541 @@
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/faults/fault_interface.h>
+
+#include <array>
+#include <cmath>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  FaultInterface<dim>::declare_parameters(ParameterHandler &prm,
+                                          ParameterHandler *first_pass)
+  {
+    const std::vector<std::string> names =
+      ParameterFile::names_from(first_pass, {"Faults"}, "Names", {"fault"});
+    prm.enter_subsection("Faults");
+    prm.declare_entry("Names",
+                      "",
+                      Patterns::Anything(),
+                      "Comma separated names of the geometry's faults (a "
+                      "layered box with `Fault surface x` has one, `fault`); "
+                      "each gets a subsection with its interface law.");
+    for (const std::string &name : names)
+      {
+        prm.enter_subsection(name);
+        prm.declare_entry("Interface law",
+                          "locked",
+                          Patterns::Selection("locked|elastic"),
+                          "locked = the displacement is continuous across "
+                          "the fault (exact constraints, thesis §5's "
+                          "k = 1e15 N/m without its penalty); elastic = the "
+                          "traction is K w, w = u(hanging wall) - "
+                          "u(footwall), K = diag(Shear stiffness, Normal "
+                          "stiffness) in the fault's (shear, normal) frame.");
+        prm.declare_entry("Shear stiffness",
+                          "",
+                          Patterns::Anything(),
+                          "k_s per unit fault area [Pa/m] (elastic law): "
+                          "the shear traction per metre of slip. The "
+                          "thesis's element stiffness [N/m] is k_s times "
+                          "its fault element's length (SPEC §3.4).");
+        prm.declare_entry("Normal stiffness",
+                          "",
+                          Patterns::Anything(),
+                          "k_n per unit fault area [Pa/m] (elastic law): "
+                          "the normal traction per metre of opening.");
+        prm.declare_entry("Thesis element length",
+                          "",
+                          Patterns::Anything(),
+                          "For the thesis's input (SPEC §3.4): if set, the "
+                          "two stiffnesses are the thesis's element "
+                          "stiffnesses [N/m] of fault elements of this "
+                          "length l [length unit], and the stiffness per "
+                          "unit area is k/l. Empty = per unit area.");
+        prm.leave_subsection();
+      }
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::parse_parameters(ParameterHandler              &prm,
+                                        const std::vector<FaultTrace> &traces,
+                                        const double length_scale)
+  {
+    faults.clear();
+    prm.enter_subsection("Faults");
+    const std::vector<std::string> names = split_list(prm.get("Names"));
+    for (const std::string &name : names)
+      {
+        bool known = false;
+        for (const FaultTrace &trace : traces)
+          known = known || trace.name == name;
+        if (!known)
+          throw_input_error("Faults/Names",
+                            "<" + name + "> is not a fault of the geometry" +
+                              (traces.empty() ? std::string(" (it has none)")
+                                              : " (its fault is <" +
+                                                  traces.front().name + ">)"));
+      }
+    for (const FaultTrace &trace : traces)
+      {
+        if (std::find(names.begin(), names.end(), trace.name) == names.end())
+          throw_input_error("Faults/Names",
+                            "the geometry has the fault <" + trace.name +
+                              ">: name it here and give its Interface law");
+        prm.enter_subsection(trace.name);
+        Fault fault;
+        fault.trace = trace;
+        fault.law =
+          prm.get("Interface law") == "elastic" ? Law::elastic : Law::locked;
+        if (fault.law == Law::elastic)
+          {
+            const auto stiffness = [&](const std::string &entry) {
+              const std::string where = "Faults/" + trace.name + "/" + entry;
+              const std::string text  = Utilities::trim(prm.get(entry));
+              if (text.empty())
+                throw_input_error(where, "is needed by the elastic law");
+              const double k = parse_number(text, where);
+              if (!(k > 0))
+                throw_input_error(where, "must be positive, got " + text);
+              return k;
+            };
+            fault.shear_stiffness  = stiffness("Shear stiffness");
+            fault.normal_stiffness = stiffness("Normal stiffness");
+            const std::string length =
+              Utilities::trim(prm.get("Thesis element length"));
+            if (!length.empty())
+              {
+                const std::string where =
+                  "Faults/" + trace.name + "/Thesis element length";
+                const double l = parse_number(length, where) * length_scale;
+                if (!(l > 0))
+                  throw_input_error(where, "must be positive, got " + length);
+                fault.shear_stiffness /= l;
+                fault.normal_stiffness /= l;
+              }
+          }
+        prm.leave_subsection();
+        faults.push_back(fault);
+      }
+    prm.leave_subsection();
+    if (faults.size() > 1)
+      throw_input_error("Faults/Names",
+                        "one fault per model is implemented so far");
+  }
+
+  template <int dim>
+  bool
+  FaultInterface<dim>::has_face_terms() const
+  {
+    for (const Fault &fault : faults)
+      if (fault.law == Law::elastic)
+        return true;
+    return false;
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::for_each_face_pair(
+    const DoFHandler<dim> &dof_handler,
+    const std::function<
+      void(const typename DoFHandler<dim>::active_cell_iterator &minus,
+           const unsigned int                                    minus_face,
+           const unsigned int                                    minus_subface,
+           const typename DoFHandler<dim>::active_cell_iterator &plus,
+           const unsigned int                                    plus_face,
+           const unsigned int plus_subface)> &pair) const
+  {
+    const unsigned int none = numbers::invalid_unsigned_int;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() || cell->active_fe_index() != 0)
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (cell->at_boundary(f))
+              continue;
+            const auto neighbor = cell->neighbor(f);
+            if (neighbor->has_children())
+              {
+                // Finer hanging wall: integrate over each child's face.
+                for (unsigned int sf = 0; sf < cell->face(f)->n_children();
+                     ++sf)
+                  {
+                    const auto child = cell->neighbor_child_on_subface(f, sf);
+                    if (child->active_fe_index() == 1)
+                      pair(cell,
+                           f,
+                           sf,
+                           child,
+                           cell->neighbor_of_neighbor(f),
+                           none);
+                  }
+              }
+            else if (neighbor->active_fe_index() == 1)
+              {
+                if (cell->neighbor_is_coarser(f))
+                  {
+                    const auto [nf, sf] = cell->neighbor_of_coarser_neighbor(f);
+                    pair(cell, f, none, neighbor, nf, sf);
+                  }
+                else
+                  pair(cell,
+                       f,
+                       none,
+                       neighbor,
+                       cell->neighbor_of_neighbor(f),
+                       none);
+              }
+          }
+      }
+  }
+
+  template <int dim>
+  std::vector<std::vector<types::global_dof_index>>
+  FaultInterface<dim>::interface_cliques(
+    const DoFHandler<dim> &dof_handler) const
+  {
+    std::vector<std::vector<types::global_dof_index>> cliques;
+    for_each_face_pair(dof_handler,
+                       [&](const auto &minus,
+                           const unsigned int,
+                           const unsigned int,
+                           const auto &plus,
+                           const unsigned int,
+                           const unsigned int) {
+                         std::vector<types::global_dof_index> a(
+                           minus->get_fe().n_dofs_per_cell()),
+                           b(plus->get_fe().n_dofs_per_cell());
+                         minus->get_dof_indices(a);
+                         plus->get_dof_indices(b);
+                         a.insert(a.end(), b.begin(), b.end());
+                         cliques.push_back(std::move(a));
+                       });
+    return cliques;
+  }
+
+  template <int dim>
+  std::vector<std::pair<Point<dim>, double>>
+  FaultInterface<dim>::interface_points(
+    const DoFHandler<dim>         &dof_handler,
+    const FiniteElementSpace<dim> &fe_space) const
+  {
+    std::vector<std::pair<Point<dim>, double>> points;
+    if (!has_face_terms())
+      return points;
+    FEFaceValues<dim> values(fe_space.mapping(),
+                             fe_space.fe_collection()[0],
+                             fe_space.face_quadrature()[0],
+                             update_quadrature_points | update_JxW_values);
+    for_each_face_pair(dof_handler,
+                       [&](const auto        &minus,
+                           const unsigned int minus_face,
+                           const unsigned int,
+                           const auto &,
+                           const unsigned int,
+                           const unsigned int) {
+                         values.reinit(minus, minus_face);
+                         for (const unsigned int q :
+                              values.quadrature_point_indices())
+                           points.emplace_back(values.quadrature_point(q),
+                                               values.JxW(q));
+                       });
+    return points;
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::assemble(const DoFHandler<dim>           &dof_handler,
+                                const FiniteElementSpace<dim>   &fe_space,
+                                const AffineConstraints<double> &constraints,
+                                TrilinosWrappers::SparseMatrix  &matrix) const
+  {
+    if (!has_face_terms())
+      return;
+    const Fault              &fault      = faults.front();
+    const auto               &collection = fe_space.fe_collection();
+    const Quadrature<dim - 1> quadrature = fe_space.face_quadrature()[0];
+    const UpdateFlags         flags      = update_values | update_JxW_values |
+                              update_normal_vectors | update_quadrature_points;
+    FEFaceValues<dim>                minus_face(fe_space.mapping(),
+                                 collection[0],
+                                 quadrature,
+                                 flags);
+    FESubfaceValues<dim>             minus_subface(fe_space.mapping(),
+                                       collection[0],
+                                       quadrature,
+                                       flags);
+    FEFaceValues<dim>                plus_face(fe_space.mapping(),
+                                collection[1],
+                                quadrature,
+                                flags);
+    FESubfaceValues<dim>             plus_subface(fe_space.mapping(),
+                                      collection[1],
+                                      quadrature,
+                                      flags);
+    const FEValuesExtractors::Vector u_minus = fe_space.displacement(0),
+                                     u_plus  = fe_space.displacement(1);
+    const unsigned int n_minus               = collection[0].n_dofs_per_cell(),
+                       n_plus                = collection[1].n_dofs_per_cell();
+    FullMatrix<double> local(n_minus + n_plus, n_minus + n_plus);
+    std::vector<types::global_dof_index> dofs(n_minus + n_plus),
+      minus_dofs(n_minus), plus_dofs(n_plus);
+    std::vector<Tensor<1, dim>> jump(n_minus + n_plus);
+    const unsigned int          none = numbers::invalid_unsigned_int;
+
+    for_each_face_pair(
+      dof_handler,
+      [&](const auto        &minus,
+          const unsigned int minus_face_no,
+          const unsigned int minus_subface_no,
+          const auto        &plus,
+          const unsigned int plus_face_no,
+          const unsigned int plus_subface_no) {
+        const FEFaceValuesBase<dim> *m = nullptr, *p = nullptr;
+        if (minus_subface_no == none)
+          {
+            minus_face.reinit(minus, minus_face_no);
+            m = &minus_face;
+          }
+        else
+          {
+            minus_subface.reinit(minus, minus_face_no, minus_subface_no);
+            m = &minus_subface;
+          }
+        if (plus_subface_no == none)
+          {
+            plus_face.reinit(plus, plus_face_no);
+            p = &plus_face;
+          }
+        else
+          {
+            plus_subface.reinit(plus, plus_face_no, plus_subface_no);
+            p = &plus_subface;
+          }
+        local = 0;
+        for (const unsigned int q : m->quadrature_point_indices())
+          {
+            // The two sides' points coincide (up to the mappings' O(h^3)
+            // on curved hanging faces); the footwall's points lie in
+            // reversed order on the hanging wall's face of a straight
+            // fault if the faces' orientations differ.
+            const Tensor<1, dim> n = m->normal_vector(q);
+            Tensor<1, dim>       s;
+            s[0]            = n[1];
+            s[1]            = -n[0];
+            unsigned int qp = q;
+            if (m->quadrature_point(q).distance(p->quadrature_point(q)) >
+                1e-8 * minus->diameter())
+              qp = m->n_quadrature_points - 1 - q;
+            Assert(m->quadrature_point(q).distance(p->quadrature_point(qp)) <=
+                     1e-6 * minus->diameter(),
+                   ExcMessage("the two sides of a fault face do not match"));
+            for (unsigned int i = 0; i < n_minus; ++i)
+              jump[i] = -(*m)[u_minus].value(i, q);
+            for (unsigned int i = 0; i < n_plus; ++i)
+              jump[n_minus + i] = (*p)[u_plus].value(i, qp);
+            const double JxW = m->JxW(q);
+            for (unsigned int i = 0; i < n_minus + n_plus; ++i)
+              {
+                const double si = jump[i] * s, ni = jump[i] * n;
+                if (si == 0 && ni == 0)
+                  continue;
+                for (unsigned int j = 0; j < n_minus + n_plus; ++j)
+                  local(i, j) += (fault.shear_stiffness * si * (jump[j] * s) +
+                                  fault.normal_stiffness * ni * (jump[j] * n)) *
+                                 JxW;
+              }
+          }
+        // The integral over the finer side's face: the coarser side's
+        // subface is the same segment.
+        minus->get_dof_indices(minus_dofs);
+        plus->get_dof_indices(plus_dofs);
+        std::copy(minus_dofs.begin(), minus_dofs.end(), dofs.begin());
+        std::copy(plus_dofs.begin(), plus_dofs.end(), dofs.begin() + n_minus);
+        constraints.distribute_local_to_global(local, dofs, matrix);
+      });
+    matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::set_active_fe_indices(DoFHandler<dim> &dof_handler) const
+  {
+    if (faults.empty())
+      return;
+    const FaultTrace &trace = faults.front().trace;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        cell->set_active_fe_index(trace.in_hanging_wall(cell->center()) ? 1
+                                                                        : 0);
+  }
+
+  namespace
+  {
+    /** face_dof[d][k]: the face-local index of the DoF of displacement
+     * component d at scalar face node k, for a cell whose active element
+     * is @p fe (one displacement field, FE_Nothing elsewhere). */
+    template <int dim>
+    std::array<std::vector<unsigned int>, dim>
+    face_dof_table(const FiniteElement<dim> &fe, const unsigned int n_nodes)
+    {
+      std::array<std::vector<unsigned int>, dim> table;
+      for (auto &column : table)
+        column.assign(n_nodes, numbers::invalid_unsigned_int);
+      for (unsigned int i = 0; i < fe.n_dofs_per_face(); ++i)
+        {
+          const auto [component, node] = fe.face_system_to_component_index(i);
+          table[component % dim][node] = i;
+        }
+      return table;
+    }
+
+    /** True if row @p j of @p m is the unit vector e_i (the subface's
+     * node j is the coarse face's node i); sets @p i. */
+    bool
+    unit_row(const FullMatrix<double> &m, const unsigned int j, unsigned int &i)
+    {
+      unsigned int ones = 0;
+      for (unsigned int c = 0; c < m.n(); ++c)
+        {
+          if (std::abs(m(j, c) - 1) < 1e-12)
+            {
+              i = c;
+              ++ones;
+            }
+          else if (std::abs(m(j, c)) > 1e-12)
+            return false;
+        }
+      return ones == 1;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  FaultInterface<dim>::add_constraints(
+    const DoFHandler<dim>         &dof_handler,
+    const FiniteElementSpace<dim> &fe_space,
+    AffineConstraints<double>     &constraints) const
+  {
+    if (faults.empty() || faults.front().law != Law::locked)
+      return;
+    const auto        &collection = fe_space.fe_collection();
+    const FE_Q<dim>    scalar(fe_space.degree());
+    const unsigned int n_nodes = scalar.n_dofs_per_face();
+    const std::array<std::array<std::vector<unsigned int>, dim>, 2> table = {
+      {face_dof_table(collection[0], n_nodes),
+       face_dof_table(collection[1], n_nodes)}};
+    std::array<FullMatrix<double>, GeometryInfo<dim>::max_children_per_face>
+      subface;
+    for (unsigned int s = 0; s < subface.size(); ++s)
+      {
+        subface[s].reinit(n_nodes, n_nodes);
+        // (j, i): the coarse face's basis function i at the subface's node
+        // j (measured: deal.II 9.4.1's FE_Q fills it by rows of the
+        // subface's nodes).
+        scalar.get_subface_interpolation_matrix(scalar, s, subface[s]);
+      }
+
+    auto constrain =
+      [&](const types::global_dof_index target,
+          const std::vector<std::pair<types::global_dof_index, double>>
+            &entries) {
+        if (!constraints.can_store_line(target) ||
+            constraints.is_constrained(target))
+          return;
+        constraints.add_line(target);
+        constraints.add_entries(target, entries);
+      };
+
+    std::vector<types::global_dof_index> dofs_0(
+      collection[0].n_dofs_per_face()),
+      dofs_1(collection[1].n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cell->is_artificial())
+          continue;
+        const unsigned int side = cell->active_fe_index();
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (cell->at_boundary(f))
+              continue;
+            const auto neighbor = cell->neighbor(f);
+            if (neighbor->has_children() || neighbor->is_artificial() ||
+                neighbor->active_fe_index() == side)
+              continue;
+            if (!cell->neighbor_is_coarser(f))
+              {
+                // Equal levels, seen from the footwall: hanging wall :=
+                // footwall at every node.
+                if (side != 0)
+                  continue;
+                cell->face(f)->get_dof_indices(dofs_0, 0);
+                cell->face(f)->get_dof_indices(dofs_1, 1);
+                for (unsigned int d = 0; d < dim; ++d)
+                  for (unsigned int k = 0; k < n_nodes; ++k)
+                    constrain(dofs_1[table[1][d][k]],
+                              {{dofs_0[table[0][d][k]], 1.0}});
+                continue;
+              }
+            // This cell is the finer side of a hanging fault face.
+            const auto [coarse_face_no, subface_no] =
+              cell->neighbor_of_coarser_neighbor(f);
+            const auto coarse_face      = neighbor->face(coarse_face_no);
+            const FullMatrix<double> &m = subface[subface_no];
+            if (side == 1)
+              {
+                // Fine hanging wall: every node := the footwall's coarse
+                // trace there.
+                coarse_face->get_dof_indices(dofs_0, 0);
+                cell->face(f)->get_dof_indices(dofs_1, 1);
+                for (unsigned int d = 0; d < dim; ++d)
+                  for (unsigned int j = 0; j < n_nodes; ++j)
+                    {
+                      std::vector<std::pair<types::global_dof_index, double>>
+                        entries;
+                      for (unsigned int i = 0; i < n_nodes; ++i)
+                        if (std::abs(m(j, i)) > 1e-14)
+                          entries.emplace_back(dofs_0[table[0][d][i]], m(j, i));
+                      constrain(dofs_1[table[1][d][j]], entries);
+                    }
+              }
+            else
+              {
+                // Fine footwall: the coarse hanging-wall nodes := the
+                // footwall nodes at the same points, the other footwall
+                // nodes := the coarse trace's interpolation.
+                coarse_face->get_dof_indices(dofs_1, 1);
+                cell->face(f)->get_dof_indices(dofs_0, 0);
+                for (unsigned int d = 0; d < dim; ++d)
+                  for (unsigned int j = 0; j < n_nodes; ++j)
+                    {
+                      unsigned int i = 0;
+                      if (unit_row(m, j, i))
+                        constrain(dofs_1[table[1][d][i]],
+                                  {{dofs_0[table[0][d][j]], 1.0}});
+                      else
+                        {
+                          std::vector<
+                            std::pair<types::global_dof_index, double>>
+                            entries;
+                          for (unsigned int c = 0; c < n_nodes; ++c)
+                            if (std::abs(m(j, c)) > 1e-14)
+                              entries.emplace_back(dofs_1[table[1][d][c]],
+                                                   m(j, c));
+                          constrain(dofs_0[table[0][d][j]], entries);
+                        }
+                    }
+              }
+          }
+      }
+  }
+
+  template class FaultInterface<2>;
+} // namespace lithostress

@@ -1,0 +1,18 @@
+#include <lithostress/faults/fault_trace.h>
+
+#include <cmath>
+
+namespace lithostress
+{
+  double
+  FaultTrace::x_at(const double y) const
+  {
+    return surface_x + direction * (top_y - y) / std::tan(dip);
+  }
+
+  bool
+  FaultTrace::in_hanging_wall(const Point<2> &p) const
+  {
+    return direction * (p[0] - x_at(p[1])) > 0;
+  }
+} // namespace lithostress

@@ -1,0 +1,121 @@
+"""Faults (issue 16, first part).
+
+A locked fault: tests/faults/locked_fault.prm, a
+block cut by a planar fault, under gravity and a uniform horizontal strain
+e. The exact solution (plane strain, sigma_yy = rho g y from the free top,
+sigma_xx = nu/(1 - nu) sigma_yy + E/(1 - nu^2) e, u_x = e x,
+u_y = integral of eps_yy from the base) is linear in x and quadratic in y,
+so it lies in the Q2 space; with the fault locked by exact constraints the
+two displacement fields must reproduce it to round-off:
+* Q2 on adaptively refined meshes whose fault faces hang from either side
+  (four cycles), on 1 and 2 ranks;
+* Q1 without gravity (then the solution is linear), where the constraints
+  of a hanging fault face interpolate linearly.
+Round-off: the solver stops at 1e-12 of the right-hand side; the points'
+values are compared relative to the largest displacement and stress:
+1e-9.
+
+An elastic fault: tests/faults/elastic_fault.prm, a block cut by a
+vertical fault with normal stiffness k_n [Pa/m] per unit area, pulled
+apart by a displacement delta of its right side: the two blocks and the
+interface are springs in series, sigma_xx = delta / ((a + b)/E' + 1/k_n)
+uniform (E' = E/(1 - nu^2), sigma_yy = 0), the fault opens by
+sigma_xx/k_n, and u is linear in each block, so it is exact on every mesh
+(Q2, three cycles of global refinement, 1 and 2 ranks): the
+stiffness is per unit area, the answer does not depend on the mesh.
+In shear (tests/faults/elastic_fault_shear.prm: left side fixed, shear
+traction tau on top, base and right side, k_s given the thesis's way as an
+element stiffness of 1e10 N/m for 1 km fault elements, i.e. 1e7 Pa/m):
+sigma_xy = tau everywhere, u = (0, tau x/G) plus the slip tau/k_s in the
+hanging wall.
+"""
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from lithotest import check, finish, read_csv, run  # noqa: E402
+
+PRM = "faults/locked_fault.prm"
+E, NU, RHO, G, STRAIN = 0.85e11, 0.25, 2750.0, 9.81, 1e-4
+BASE = -10e3
+
+
+def exact(x, y, gravity=True):
+    """(u_x, u_y, s_xx, s_yy, s_xy, s_zz) of the block."""
+    g = G if gravity else 0.0
+    a = NU / (1 - NU)
+    b = E / (1 - NU ** 2) * STRAIN
+    s_yy = RHO * g * y
+    s_xx = a * s_yy + b
+    # eps_yy = (1 + nu)/E [(1 - nu) s_yy - nu s_xx], integrated from the base.
+    c = (1 + NU) / E
+    u_y = c * (((1 - NU) - NU * a) * RHO * g * (y * y - BASE * BASE) / 2 - NU * b * (y - BASE))
+    return (STRAIN * x, u_y, s_xx, s_yy, 0.0, NU * (s_xx + s_yy))
+
+
+def compare(out, gravity, label):
+    rows = read_csv(os.path.join(out, "point_values.csv"))
+    keys = ("u_x", "u_y", "sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz")
+    exacts = [exact(r["x"], r["y"], gravity) for r in rows]
+    u_scale = max(max(abs(e[0]), abs(e[1])) for e in exacts)
+    s_scale = max(max(abs(v) for v in e[2:]) for e in exacts)
+    worst = 0.0
+    for r, e in zip(rows, exacts):
+        for k, v in zip(keys, e):
+            worst = max(worst, abs(r[k] - v) / (u_scale if k[0] == "u" else s_scale))
+    check(len(rows) == 6 and worst < 1e-9,
+          "%s: %d points on, beside and away from the fault equal the exact solution, "
+          "largest relative difference %.1e" % (label, len(rows), worst))
+
+
+for ranks in (1, 2):
+    out = os.path.abspath("output_locked_fault_%d" % ranks)
+    result = run(PRM, out, ranks)
+    cycles = [line for line in result.stdout.splitlines() if re.match(r"cycle \d+: ", line)]
+    check(len(cycles) == 4, "Q2, %d rank(s): 4 adaptive cycles (%s)" % (ranks, cycles[-1] if cycles else "none"))
+    compare(out, True, "Q2, %d rank(s)" % ranks)
+
+def elastic_exact(x, y, delta=10.0, k_n=1e7, a=5e3, b=5e3):
+    """(u_x, u_y, s_xx, s_yy, s_xy, s_zz) of the elastic-fault block."""
+    Ep = E / (1 - NU ** 2)
+    s = delta / ((a + b) / Ep + 1 / k_n)
+    u_x = s * x / Ep + (s / k_n if x > a else 0.0)
+    eps_yy = -NU * (1 + NU) * s / E
+    return (u_x, eps_yy * (y - BASE), s, 0.0, 0.0, NU * s)
+
+
+for ranks in (1, 2):
+    out = os.path.abspath("output_elastic_fault_%d" % ranks)
+    run("faults/elastic_fault.prm", out, ranks)
+    rows = read_csv(os.path.join(out, "point_values.csv"))
+    keys = ("u_x", "u_y", "sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz")
+    exacts = [elastic_exact(r["x"], r["y"]) for r in rows]
+    worst = max(abs(r[k] - v) / max(abs(e[2]) if k[0] == "s" else abs(e[0]), 1.0)
+                for r, e in zip(rows, exacts) for k, v in zip(keys, e))
+    opening = rows[1]["u_x"] - rows[0]["u_x"] - exacts[0][2] * 20 / (E / (1 - NU ** 2))
+    check(len(rows) == 6 and worst < 1e-9,
+          "elastic fault, %d rank(s): sigma_xx = %.6e Pa (springs in series: %.6e), "
+          "opening %.6f m (sigma/k_n = %.6f m), largest relative difference %.1e"
+          % (ranks, rows[4]["sigma_xx"], exacts[4][2], opening, exacts[4][2] / 1e7, worst))
+
+TAU, K_S, GS = 1e7, 1e10 / 1e3, E / (2 * (1 + NU))
+for ranks in (1, 2):
+    out = os.path.abspath("output_elastic_fault_shear_%d" % ranks)
+    run("faults/elastic_fault_shear.prm", out, ranks)
+    rows = read_csv(os.path.join(out, "point_values.csv"))
+    worst = 0.0
+    for r in rows:
+        u_y = TAU * r["x"] / GS + (TAU / K_S if r["x"] > 5e3 else 0.0)
+        worst = max(worst, abs(r["u_x"]) / 1.0, abs(r["u_y"] - u_y) / 1.0,
+                    abs(r["sigma_xy"] - TAU) / TAU, abs(r["sigma_xx"]) / TAU,
+                    abs(r["sigma_yy"]) / TAU, abs(r["sigma_zz"]) / TAU)
+    slip = rows[1]["u_y"] - rows[0]["u_y"] - TAU * 20 / GS
+    check(len(rows) == 6 and worst < 1e-9,
+          "elastic fault in shear, %d rank(s): slip %.9f m (tau/k_s = %.9f m), sigma_xy = tau, "
+          "largest relative difference %.1e" % (ranks, slip, TAU / K_S, worst))
+
+out = os.path.abspath("output_locked_fault_q1")
+run(PRM, out, 1, ["Discretization/Polynomial degree=1", "Loads/Gravity/Enabled=false"])
+compare(out, False, "Q1 without gravity")
+finish()
