@@ -477,64 +477,80 @@ namespace lithostress
       start();
 
     while (t < settings.end_time)
-      {
-        sim.stop_if_requested("time step " + std::to_string(step + 1));
-        StepRecord record;
-        Timer      clock(sim.communicator, true);
-        double     t_new = settings.next_time(t, step_limit(dt));
-        while (!attempt_step(t_new, record))
-          {
-            ++record.rejected;
-            // The estimate grows as Δt^(p+1) for a method of order p: aim
-            // at half the tolerance.
-            const double h     = t_new - t;
-            const double power = sim.creep->second_order_step() ? 3 : 2;
-            dt                 = h * std::max(0.1,
-                              std::pow(0.5 * settings.tolerance /
-                                         record.error_estimate,
-                                       1 / power));
-            if (dt < settings.minimum_step)
-              throw ComputationError(
-                "the time step from t = " + settings.format(t) +
-                " would have to be shorter than the Minimum time step (" +
-                settings.format(settings.minimum_step) +
-                ") to keep the creep-strain increment below the tolerance");
-            t_new = settings.next_time(t, step_limit(dt));
-          }
-        record.dt    = t_new - t;
-        t            = t_new;
-        record.time  = t;
-        record.step  = ++step;
-        record.dofs  = sim.dof_handler.n_dofs();
-        record.cells = sim.triangulation.n_global_active_cells();
-        // Double the step while the estimate (∝ Δt², or Δt³ for BDF2)
-        // stays below a quarter (an eighth) of the tolerance; otherwise
-        // keep it, so that the solver's set-up for the step stays valid.
-        const double growth_margin =
-          sim.creep->second_order_step() ? 0.125 : 0.25;
-        if (settings.adaptive &&
-            record.error_estimate < growth_margin * settings.tolerance &&
-            record.dt >= 0.99 * dt)
-          dt *= 2;
-        const int output = settings.output_index(t);
-        if (output >= 0)
-          write_output(output);
-        record.wall_time = clock.wall_time();
-        steps.push_back(record);
-        write_time_steps();
-        report_step(record);
-        if (settings.refinement_interval > 0 &&
-            step % settings.refinement_interval == 0 && t < settings.end_time)
-          refine_mesh();
-        if (settings.checkpoint_interval > 0 &&
-            step % settings.checkpoint_interval == 0 && t < settings.end_time)
-          write_checkpoint();
-      }
+      try
+        {
+          take_step();
+        }
+      catch (const RunInterrupted &stop)
+        {
+          // Name the step of a stop inside it (assembly, solve, CG).
+          if (stop.where().rfind("time step", 0) == 0)
+            throw;
+          throw RunInterrupted(stop.signal(),
+                               "time step " + std::to_string(step + 1) + " (" +
+                                 stop.where() + ")");
+        }
     write_checkpoint();
     sim.log << "Time loop: " << step << " steps, " << linear_solves
             << " linear solves, " << std::setprecision(4)
             << wall_clock.wall_time() << " s\n";
     sim.write_final_results();
+  }
+
+  template <int dim>
+  void
+  ViscoelasticTimeLoop<dim>::take_step()
+  {
+    sim.stop_if_requested("time step " + std::to_string(step + 1));
+    StepRecord record;
+    Timer      clock(sim.communicator, true);
+    double     t_new = settings.next_time(t, step_limit(dt));
+    while (!attempt_step(t_new, record))
+      {
+        ++record.rejected;
+        // The estimate grows as Δt^(p+1) for a method of order p: aim
+        // at half the tolerance.
+        const double h     = t_new - t;
+        const double power = sim.creep->second_order_step() ? 3 : 2;
+        dt                 = h *
+             std::max(0.1,
+                      std::pow(0.5 * settings.tolerance / record.error_estimate,
+                               1 / power));
+        if (dt < settings.minimum_step)
+          throw ComputationError(
+            "the time step from t = " + settings.format(t) +
+            " would have to be shorter than the Minimum time step (" +
+            settings.format(settings.minimum_step) +
+            ") to keep the creep-strain increment below the tolerance");
+        t_new = settings.next_time(t, step_limit(dt));
+      }
+    record.dt    = t_new - t;
+    t            = t_new;
+    record.time  = t;
+    record.step  = ++step;
+    record.dofs  = sim.dof_handler.n_dofs();
+    record.cells = sim.triangulation.n_global_active_cells();
+    // Double the step while the estimate (∝ Δt², or Δt³ for BDF2)
+    // stays below a quarter (an eighth) of the tolerance; otherwise
+    // keep it, so that the solver's set-up for the step stays valid.
+    const double growth_margin = sim.creep->second_order_step() ? 0.125 : 0.25;
+    if (settings.adaptive &&
+        record.error_estimate < growth_margin * settings.tolerance &&
+        record.dt >= 0.99 * dt)
+      dt *= 2;
+    const int output = settings.output_index(t);
+    if (output >= 0)
+      write_output(output);
+    record.wall_time = clock.wall_time();
+    steps.push_back(record);
+    write_time_steps();
+    report_step(record);
+    if (settings.refinement_interval > 0 &&
+        step % settings.refinement_interval == 0 && t < settings.end_time)
+      refine_mesh();
+    if (settings.checkpoint_interval > 0 &&
+        step % settings.checkpoint_interval == 0 && t < settings.end_time)
+      write_checkpoint();
   }
 
   template class ViscoelasticTimeLoop<2>;

@@ -60,6 +60,11 @@ namespace lithostress
     bool
     attempt_step(const double t_new, StepRecord &record);
 
+    /** One accepted step from t (with its rejected attempts), its output,
+     * and the refinement and checkpoint that fall on it. */
+    void
+    take_step();
+
     /** The step to take when the controller proposes @p proposed: BDF2
      * steps grow by at most a factor 2 (its zero-stability). */
     double
