@@ -298,27 +298,25 @@ namespace lithostress
           const auto        &plus,
           const unsigned int plus_face_no,
           const unsigned int plus_subface_no) {
-        const FEFaceValuesBase<dim> *m = nullptr, *p = nullptr;
-        if (minus_subface_no == none)
-          {
-            minus_face.reinit(minus, minus_face_no);
-            m = &minus_face;
-          }
-        else
-          {
-            minus_subface.reinit(minus, minus_face_no, minus_subface_no);
-            m = &minus_subface;
-          }
-        if (plus_subface_no == none)
-          {
-            plus_face.reinit(plus, plus_face_no);
-            p = &plus_face;
-          }
-        else
-          {
-            plus_subface.reinit(plus, plus_face_no, plus_subface_no);
-            p = &plus_subface;
-          }
+        // The finer side's whole face, the coarser side's subface.
+        const auto reinit = [none](auto              &face,
+                                   auto              &subface,
+                                   const auto        &cell,
+                                   const unsigned int face_no,
+                                   const unsigned int subface_no)
+          -> const FEFaceValuesBase<dim> * {
+          if (subface_no == none)
+            {
+              face.reinit(cell, face_no);
+              return &face;
+            }
+          subface.reinit(cell, face_no, subface_no);
+          return &subface;
+        };
+        const FEFaceValuesBase<dim> *m = reinit(
+          minus_face, minus_subface, minus, minus_face_no, minus_subface_no);
+        const FEFaceValuesBase<dim> *p =
+          reinit(plus_face, plus_subface, plus, plus_face_no, plus_subface_no);
         local = 0;
         for (const unsigned int q : m->quadrature_point_indices())
           {

@@ -4,6 +4,7 @@
 #include <deal.II/base/table.h>
 #include <deal.II/base/vectorization.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
 #include <deal.II/matrix_free/operators.h>
 
@@ -52,7 +53,27 @@ namespace lithostress
     using Base =
       MatrixFreeOperators::Base<dim, VectorType, VectorizedArrayType>;
     using MatrixFreeType = MatrixFree<dim, number, VectorizedArrayType>;
-    using CellIterator   = typename DoFHandler<dim>::cell_iterator;
+    /** Evaluators of the vector-valued space on cells and faces, and of one
+     * scalar component (for the diagonal). */
+    using CellEvaluation   = FEEvaluation<dim,
+                                        fe_degree,
+                                        fe_degree + 1,
+                                        dim,
+                                        number,
+                                        VectorizedArrayType>;
+    using FaceEvaluation   = FEFaceEvaluation<dim,
+                                            fe_degree,
+                                            fe_degree + 1,
+                                            dim,
+                                            number,
+                                            VectorizedArrayType>;
+    using ScalarEvaluation = FEEvaluation<dim,
+                                          fe_degree,
+                                          fe_degree + 1,
+                                          1,
+                                          number,
+                                          VectorizedArrayType>;
+    using CellIterator     = typename DoFHandler<dim>::cell_iterator;
 
     /** Moduli of the cell @p cell (a level or active cell iterator). */
     using CellModuli = std::function<LameParameters(const CellIterator &cell)>;

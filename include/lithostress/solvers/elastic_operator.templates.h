@@ -260,13 +260,7 @@ namespace lithostress
                      const VectorType                            &src,
                      const std::pair<unsigned int, unsigned int> &range) const
   {
-    FEEvaluation<dim,
-                 fe_degree,
-                 fe_degree + 1,
-                 dim,
-                 number,
-                 VectorizedArrayType>
-      phi(data);
+    CellEvaluation phi(data);
     for (unsigned int cell = range.first; cell < range.second; ++cell)
       {
         phi.reinit(cell);
@@ -288,13 +282,7 @@ namespace lithostress
       const VectorType                            &src,
       const std::pair<unsigned int, unsigned int> &range) const
   {
-    FEFaceEvaluation<dim,
-                     fe_degree,
-                     fe_degree + 1,
-                     dim,
-                     number,
-                     VectorizedArrayType>
-      phi(data, true);
+    FaceEvaluation phi(data, true);
     for (unsigned int face = range.first; face < range.second; ++face)
       {
         const number k = spring_stiffness(data.get_boundary_id(face));
@@ -354,20 +342,8 @@ namespace lithostress
     // Exact where cells carry no hanging-node constraints (every multigrid
     // level, the only place the diagonal is used).
     {
-      FEEvaluation<dim,
-                   fe_degree,
-                   fe_degree + 1,
-                   1,
-                   number,
-                   VectorizedArrayType>
-        scalar(*this->data);
-      FEEvaluation<dim,
-                   fe_degree,
-                   fe_degree + 1,
-                   dim,
-                   number,
-                   VectorizedArrayType>
-                         phi(*this->data);
+      ScalarEvaluation   scalar(*this->data);
+      CellEvaluation     phi(*this->data);
       const unsigned int n = scalar.dofs_per_cell;
       for (unsigned int cell = 0; cell < this->data->n_cell_batches(); ++cell)
         {
@@ -408,13 +384,7 @@ namespace lithostress
     // place the diagonal is used).
     if (!springs.empty())
       {
-        FEFaceEvaluation<dim,
-                         fe_degree,
-                         fe_degree + 1,
-                         dim,
-                         number,
-                         VectorizedArrayType>
-                                           phi(*this->data, true);
+        FaceEvaluation                     phi(*this->data, true);
         AlignedVector<VectorizedArrayType> local(phi.dofs_per_cell);
         const unsigned int first = this->data->n_inner_face_batches();
         const unsigned int last = first + this->data->n_boundary_face_batches();
