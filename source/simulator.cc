@@ -8,6 +8,7 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/boundary_conditions/rigid_body_support.h>
 #include <lithostress/discretization/elastic_assembler.h>
+#include <lithostress/faults/fault_output.h>
 #include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/error_norms.h>
 #include <lithostress/postprocess/force_balance.h>
@@ -63,6 +64,7 @@ namespace lithostress
     MaterialLibrary::declare_parameters(prm, first_pass);
     PrescribedDisplacement<dim>::declare_parameters(prm, first_pass);
     FaultInterface<dim>::declare_parameters(prm, first_pass);
+    FrictionalSlidingSolver<dim>::declare_parameters(prm);
     LoadCollection<dim>::declare_parameters(prm, first_pass);
     MeshRefinement<dim>::declare_parameters(prm);
     LinearSolverSelector<dim>::declare_parameters(prm);
@@ -170,6 +172,7 @@ namespace lithostress
           curved = curved || face->manifold_id() != numbers::flat_manifold_id;
       }
     faults.parse_parameters(prm, geometry->fault_traces(), length_scale);
+    sliding_solver.parse_parameters(prm);
     if (faults.active() && degree > 2)
       throw_input_error("Discretization/Polynomial degree",
                         "faults are implemented for degrees 1 and 2");
@@ -310,6 +313,9 @@ namespace lithostress
                           interior_dofs * cells + boundary_dofs * growth,
                           linear_solver->name(),
                           linear_solver->memory_per_dof(),
+                          linear_solver->memory_of_levels(
+                            coarse_cells, triangulation.n_global_levels() +
+                                            refinements),
                           "Mesh refinement/Initial global refinement" +
                             std::string(
                               refinement.strategy ==
@@ -432,11 +438,11 @@ namespace lithostress
     const bool with_matrix =
       linear_solver->needs_matrix() && matrix_version != operator_version();
     assembler.assemble(dof_handler, system, with_matrix);
-    if (with_matrix)
-      faults.assemble(dof_handler,
-                      *fe_space,
-                      system.constraints,
-                      system.matrix);
+    faults.assemble(dof_handler,
+                    *fe_space,
+                    system.constraints,
+                    with_matrix ? &system.matrix : nullptr,
+                    system.rhs);
     if (with_matrix)
       matrix_version = operator_version();
     statistics.assemble_time = clock.wall_time();
@@ -460,7 +466,30 @@ namespace lithostress
                                        prescribed_displacement,
                                        keep_solver_setup,
                                        operator_version()};
-    statistics.solver = linear_solver->solve(problem, owned_solution);
+    if (faults.frictional())
+      {
+        try
+          {
+            statistics.solver = sliding_solver.solve(
+              problem,
+              faults,
+              slip_history,
+              owned_solution,
+              [&](const std::string &line) { log << line << std::endl; });
+          }
+        catch (const ComputationError &)
+          {
+            // The last iterate, for the user to look at.
+            solution.reinit(system.locally_owned,
+                            system.locally_relevant,
+                            communicator);
+            solution = owned_solution;
+            write_fault_results();
+            throw;
+          }
+      }
+    else
+      statistics.solver = linear_solver->solve(problem, owned_solution);
     system.constraints.distribute(owned_solution);
     const double norm = owned_solution.l2_norm();
     if (!std::isfinite(norm))
@@ -552,7 +581,52 @@ namespace lithostress
         if (thin_plate.enabled && cycle + 1 == refinement.n_cycles)
           thin_plate_profile = profile;
       }
+    if (faults.has_face_terms())
+      write_fault_results();
     log << progress.str() << std::endl;
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::write_fault_results()
+  {
+    const std::vector<FaultSample> samples =
+      sample_fault(faults, dof_handler, *fe_space, solution, slip_history);
+    FaultSummary summary         = summarize_fault(samples);
+    summary.nonlinear_iterations = statistics.solver.nonlinear_iterations;
+    summary.linear_solves        = statistics.solver.linear_solves;
+    // The smallest Griffith C on the top surface of the downthrown side
+    // (the hanging wall if the throw is positive).
+    summary.tensile_failure_distance_m = std::nan("");
+    if (surface_boundary != numbers::invalid_boundary_id)
+      {
+        const FaultTrace &trace = faults.trace();
+        const double      side =
+          (summary.throw_m >= 0 ? 1. : -1.) * trace.direction;
+        std::vector<Point<dim>> top;
+        for (const auto &row : surface_profile(
+               dof_handler, *fe_space, solution, surface_boundary))
+          if (side * (row[0] - trace.surface_x) > 1e-6 * std::abs(row[0]) + 1e-3)
+            top.emplace_back(row[0], row[1]);
+        const auto stresses = sample_stresses(
+          dof_handler, *fe_space, *stress_model, griffith, solution, top);
+        double lowest = std::numeric_limits<double>::max();
+        for (const auto &sample : stresses)
+          if (sample.analysis.degree_of_failure < lowest)
+            {
+              lowest = sample.analysis.degree_of_failure;
+              summary.tensile_failure_distance_m =
+                std::abs(sample.value.point[0] - trace.surface_x);
+            }
+      }
+    on_all_ranks(communicator, [&]() {
+      if (Utilities::MPI::this_mpi_process(communicator) == 0)
+        {
+          write_fault_csv(output_directory + "/fault.csv", samples);
+          write_fault_summary(output_directory + "/fault_summary.json",
+                              summary);
+        }
+    });
   }
 
   template <int dim>
@@ -666,14 +740,23 @@ namespace lithostress
                       *fe_space,
                       *stress_model,
                       solution,
-                      [&](const double cells) {
-                        memory_budget.check(mesh,
-                                            cells,
-                                            dofs_per_cell * cells,
-                                            linear_solver->name(),
-                                            linear_solver->memory_per_dof(),
-                                            "Mesh refinement/Number of cycles, "
-                                            "Refine fraction or Maximum level");
+                      [&](const double cells, const unsigned int levels) {
+                        const double level_bytes =
+                          linear_solver->memory_of_levels(
+                            triangulation.n_global_coarse_cells(), levels);
+                        memory_budget.check(
+                          mesh,
+                          cells,
+                          dofs_per_cell * cells,
+                          linear_solver->name(),
+                          linear_solver->memory_per_dof(),
+                          level_bytes,
+                          "Mesh refinement/Number of cycles, Refine fraction "
+                          "or Maximum level" +
+                            std::string(level_bytes > 0 ?
+                                          " (or take Solver/Multigrid "
+                                          "hierarchy = local smoothing)" :
+                                          ""));
                         if (before_change)
                           before_change();
                       });

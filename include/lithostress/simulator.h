@@ -14,6 +14,8 @@
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
 #include <lithostress/faults/fault_interface.h>
+#include <lithostress/faults/fault_slip_history.h>
+#include <lithostress/faults/frictional_sliding_solver.h>
 #include <lithostress/geometry/geometry_model.h>
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/elastic_moduli.h>
@@ -108,6 +110,10 @@ namespace lithostress
     solve();
     void
     postprocess(const unsigned int cycle);
+    /** fault.csv and fault_summary.json of a model with an elastic or
+     * frictional fault (FaultOutput). */
+    void
+    write_fault_results();
     void
     check_output_directory() const;
     /**
@@ -170,6 +176,9 @@ namespace lithostress
     LoadCollection<dim>                       loads;
     PrescribedDisplacement<dim>               prescribed_displacement;
     FaultInterface<dim>                       faults;
+    FrictionalSlidingSolver<dim>              sliding_solver;
+    /** The frictional fault's accumulated slip (its history). */
+    FaultSlipHistory slip_history;
     std::unique_ptr<StressModel<dim>>         stress_model;
     std::unique_ptr<FiniteElementSpace<dim>>  fe_space;
     DoFHandler<dim>                           dof_handler;

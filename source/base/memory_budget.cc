@@ -168,10 +168,11 @@ namespace lithostress
                       const double       dofs,
                       const std::string &solver,
                       const double       bytes_per_dof,
+                      const double       level_bytes,
                       const std::string &entries) const
   {
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
-    const double       total   = estimate(dofs, bytes_per_dof, n_ranks);
+    const double total = estimate(dofs, bytes_per_dof, n_ranks) + level_bytes;
     // The share of this node (ranks share the DoFs evenly) against what it
     // has, or the whole run against the given limit.
     double      need = total, have = limit;
@@ -184,7 +185,8 @@ namespace lithostress
         const unsigned int on_node = Utilities::MPI::n_mpi_processes(node);
         const bool node_root = Utilities::MPI::this_mpi_process(node) == 0;
         MPI_Comm_free(&node);
-        need = estimate(dofs * on_node / n_ranks, bytes_per_dof, on_node);
+        need = estimate(dofs * on_node / n_ranks, bytes_per_dof, on_node) +
+               level_bytes * on_node / n_ranks;
         have = available_memory_on_node();
         // The node that is shortest of memory decides.
         const double ratio =
@@ -208,8 +210,12 @@ namespace lithostress
          << " cells and " << dofs << " DoFs and need about "
          << memory_text(need) << " (" << solver << ", " << bytes_per_dof / 1e3
          << " kB per DoF and " << memory_text(bytes_per_rank)
-         << " per rank) against " << memory_text(have) << ", " << source
-         << "; lower " << entries << " or raise Resources/Memory limit";
+         << " per rank";
+    if (level_bytes > 0)
+      what << ", of which " << memory_text(level_bytes)
+           << " for the solver's set-up on a mesh this deep";
+    what << ") against " << memory_text(have) << ", " << source << "; lower "
+         << entries << " or raise Resources/Memory limit";
     throw_input_error("Resources/Memory limit", what.str());
   }
 } // namespace lithostress

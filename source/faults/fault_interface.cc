@@ -30,13 +30,16 @@ namespace lithostress
         prm.enter_subsection(name);
         prm.declare_entry("Interface law",
                           "locked",
-                          Patterns::Selection("locked|elastic"),
+                          Patterns::Selection("locked|elastic|frictional"),
                           "locked = the displacement is continuous across "
                           "the fault (exact constraints, thesis §5's "
                           "k = 1e15 N/m without its penalty); elastic = the "
                           "traction is K w, w = u(hanging wall) - "
                           "u(footwall), K = diag(Shear stiffness, Normal "
-                          "stiffness) in the fault's (shear, normal) frame.");
+                          "stiffness) in the fault's (shear, normal) frame; "
+                          "frictional = elastic until the shear traction "
+                          "reaches mu |sigma_n,eff|, then Coulomb sliding "
+                          "(thesis §5.5; solved by the Sliding solver).");
         prm.declare_entry("Shear stiffness",
                           "",
                           Patterns::Anything(),
@@ -57,6 +60,28 @@ namespace lithostress
                           "stiffnesses [N/m] of fault elements of this "
                           "length l [length unit], and the stiffness per "
                           "unit area is k/l. Empty = per unit area.");
+        prm.declare_entry("Friction coefficient",
+                          "0.1",
+                          Patterns::Anything(),
+                          "mu of the frictional law (thesis: 0.1).");
+        prm.declare_entry(
+          "Lithostatic density",
+          "2911",
+          Patterns::Anything(),
+          "rho_l [kg/m^3] of the lithostatic normal stress rho_l g depth "
+          "that the frictional law adds to the model's normal traction "
+          "(FSHEAR's 2911, for models without body forces); 0 = none, for "
+          "models whose stresses include gravity.");
+        prm.declare_entry("Pore fluid density",
+                          "1000",
+                          Patterns::Anything(),
+                          "rho_w [kg/m^3] of the hydrostatic pore pressure "
+                          "rho_w g depth subtracted from the compression "
+                          "(FSHEAR's 1000); 0 = dry.");
+        prm.declare_entry("Gravity",
+                          "9.81",
+                          Patterns::Anything(),
+                          "g [m/s^2] of those two terms.");
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -92,34 +117,50 @@ namespace lithostress
         prm.enter_subsection(trace.name);
         Fault fault;
         fault.trace = trace;
-        fault.law =
-          prm.get("Interface law") == "elastic" ? Law::elastic : Law::locked;
-        if (fault.law == Law::elastic)
+        const std::string law = prm.get("Interface law");
+        fault.law = law == "elastic"      ? Law::elastic :
+                    law == "frictional" ? Law::frictional :
+                                          Law::locked;
+        const auto entry = [&](const std::string &name) {
+          return "Faults/" + trace.name + "/" + name;
+        };
+        const auto number = [&](const std::string &name,
+                                const double       lowest,
+                                const bool         inclusive) {
+          const std::string text = Utilities::trim(prm.get(name));
+          if (text.empty())
+            throw_input_error(entry(name), "is needed by the " + law + " law");
+          const double value = parse_number(text, entry(name));
+          if (inclusive ? !(value >= lowest) : !(value > lowest))
+            throw_input_error(entry(name),
+                              std::string("must be ") +
+                                (inclusive ? "at least " : "greater than ") +
+                                (lowest == 0 ? "0" : std::to_string(lowest)) +
+                                ", got " + text);
+          return value;
+        };
+        if (fault.law != Law::locked)
           {
-            const auto stiffness = [&](const std::string &entry) {
-              const std::string where = "Faults/" + trace.name + "/" + entry;
-              const std::string text  = Utilities::trim(prm.get(entry));
-              if (text.empty())
-                throw_input_error(where, "is needed by the elastic law");
-              const double k = parse_number(text, where);
-              if (!(k > 0))
-                throw_input_error(where, "must be positive, got " + text);
-              return k;
-            };
-            fault.shear_stiffness  = stiffness("Shear stiffness");
-            fault.normal_stiffness = stiffness("Normal stiffness");
+            CoulombFriction &f = fault.friction;
+            f.shear_stiffness  = number("Shear stiffness", 0, false);
+            f.normal_stiffness = number("Normal stiffness", 0, false);
             const std::string length =
               Utilities::trim(prm.get("Thesis element length"));
             if (!length.empty())
               {
-                const std::string where =
-                  "Faults/" + trace.name + "/Thesis element length";
-                const double l = parse_number(length, where) * length_scale;
-                if (!(l > 0))
-                  throw_input_error(where, "must be positive, got " + length);
-                fault.shear_stiffness /= l;
-                fault.normal_stiffness /= l;
+                const double l =
+                  number("Thesis element length", 0, false) * length_scale;
+                f.shear_stiffness /= l;
+                f.normal_stiffness /= l;
               }
+          }
+        if (fault.law == Law::frictional)
+          {
+            CoulombFriction &f     = fault.friction;
+            f.friction_coefficient = number("Friction coefficient", 0, true);
+            f.lithostatic_density  = number("Lithostatic density", 0, true);
+            f.pore_fluid_density   = number("Pore fluid density", 0, true);
+            f.gravity              = number("Gravity", 0, true);
           }
         prm.leave_subsection();
         faults.push_back(fault);
@@ -135,7 +176,7 @@ namespace lithostress
   FaultInterface<dim>::has_face_terms() const
   {
     for (const Fault &fault : faults)
-      if (fault.law == Law::elastic)
+      if (fault.law != Law::locked)
         return true;
     return false;
   }
@@ -230,23 +271,31 @@ namespace lithostress
     std::vector<std::pair<Point<dim>, double>> points;
     if (!has_face_terms())
       return points;
-    FEFaceValues<dim> values(fe_space.mapping(),
-                             fe_space.fe_collection()[0],
-                             fe_space.face_quadrature()[0],
-                             update_quadrature_points | update_JxW_values);
-    for_each_face_pair(dof_handler,
-                       [&](const auto        &minus,
-                           const unsigned int minus_face,
-                           const unsigned int,
-                           const auto &,
-                           const unsigned int,
-                           const unsigned int) {
-                         values.reinit(minus, minus_face);
-                         for (const unsigned int q :
-                              values.quadrature_point_indices())
-                           points.emplace_back(values.quadrature_point(q),
-                                               values.JxW(q));
-                       });
+    for (const InterfacePoint &p : interface_quadrature(dof_handler, fe_space))
+      points.emplace_back(p.position, p.JxW);
+    return points;
+  }
+
+  template <int dim>
+  std::vector<typename FaultInterface<dim>::InterfacePoint>
+  FaultInterface<dim>::interface_quadrature(
+    const DoFHandler<dim>         &dof_handler,
+    const FiniteElementSpace<dim> &fe_space) const
+  {
+    std::vector<InterfacePoint> points;
+    assemble_interface(
+      dof_handler,
+      fe_space,
+      AffineConstraints<double>(),
+      nullptr,
+      [&](const unsigned int,
+          const InterfacePoint &point,
+          const Tensor<1, dim> &,
+          Tensor<1, dim> &,
+          Tensor<2, dim> &) { points.push_back(point); },
+      nullptr,
+      nullptr,
+      nullptr);
     return points;
   }
 
@@ -255,11 +304,47 @@ namespace lithostress
   FaultInterface<dim>::assemble(const DoFHandler<dim>           &dof_handler,
                                 const FiniteElementSpace<dim>   &fe_space,
                                 const AffineConstraints<double> &constraints,
-                                TrilinosWrappers::SparseMatrix  &matrix) const
+                                TrilinosWrappers::SparseMatrix  *matrix,
+                                TrilinosWrappers::MPI::Vector   &rhs) const
+  {
+    if (faults.empty() || faults.front().law != Law::elastic)
+      return;
+    const CoulombFriction &law = faults.front().friction;
+    assemble_interface(
+      dof_handler,
+      fe_space,
+      constraints,
+      nullptr,
+      [&](const unsigned int,
+          const InterfacePoint &point,
+          const Tensor<1, dim> &jump,
+          Tensor<1, dim>       &traction,
+          Tensor<2, dim>       &tangent) {
+        tangent = law.shear_stiffness * outer_product(point.shear, point.shear) +
+                  law.normal_stiffness *
+                    outer_product(point.normal, point.normal);
+        traction = tangent * jump;
+      },
+      matrix,
+      &rhs,
+      nullptr);
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::assemble_interface(
+    const DoFHandler<dim>               &dof_handler,
+    const FiniteElementSpace<dim>       &fe_space,
+    const AffineConstraints<double>     &constraints,
+    const TrilinosWrappers::MPI::Vector *solution,
+    const PointLaw                      &law,
+    TrilinosWrappers::SparseMatrix      *matrix,
+    TrilinosWrappers::MPI::Vector       *rhs,
+    TrilinosWrappers::MPI::Vector       *force) const
   {
     if (!has_face_terms())
       return;
-    const Fault              &fault      = faults.front();
+    const FaultTrace         &trace      = faults.front().trace;
     const auto               &collection = fe_space.fe_collection();
     const Quadrature<dim - 1> quadrature = fe_space.face_quadrature()[0];
     const UpdateFlags         flags      = update_values | update_JxW_values |
@@ -283,12 +368,16 @@ namespace lithostress
     const FEValuesExtractors::Vector u_minus = fe_space.displacement(0),
                                      u_plus  = fe_space.displacement(1);
     const unsigned int n_minus               = collection[0].n_dofs_per_cell(),
-                       n_plus                = collection[1].n_dofs_per_cell();
-    FullMatrix<double> local(n_minus + n_plus, n_minus + n_plus);
-    std::vector<types::global_dof_index> dofs(n_minus + n_plus),
-      minus_dofs(n_minus), plus_dofs(n_plus);
-    std::vector<Tensor<1, dim>> jump(n_minus + n_plus);
-    const unsigned int          none = numbers::invalid_unsigned_int;
+                       n_plus                = collection[1].n_dofs_per_cell(),
+                       n                     = n_minus + n_plus;
+    FullMatrix<double>                   local_matrix(n, n);
+    Vector<double>                       local_rhs(n), local_force(n);
+    Vector<double>                       values(n);
+    std::vector<types::global_dof_index> dofs(n), minus_dofs(n_minus),
+      plus_dofs(n_plus);
+    std::vector<Tensor<1, dim>> jump(n);
+    const unsigned int          none  = numbers::invalid_unsigned_int;
+    unsigned int                index = 0;
 
     for_each_face_pair(
       dof_handler,
@@ -317,17 +406,23 @@ namespace lithostress
           minus_face, minus_subface, minus, minus_face_no, minus_subface_no);
         const FEFaceValuesBase<dim> *p =
           reinit(plus_face, plus_subface, plus, plus_face_no, plus_subface_no);
-        local = 0;
+        minus->get_dof_indices(minus_dofs);
+        plus->get_dof_indices(plus_dofs);
+        std::copy(minus_dofs.begin(), minus_dofs.end(), dofs.begin());
+        std::copy(plus_dofs.begin(), plus_dofs.end(), dofs.begin() + n_minus);
+        values = 0;
+        if (solution)
+          for (unsigned int i = 0; i < n; ++i)
+            values[i] = (*solution)[dofs[i]];
+        local_matrix = 0;
+        local_rhs    = 0;
+        local_force  = 0;
         for (const unsigned int q : m->quadrature_point_indices())
           {
             // The two sides' points coincide (up to the mappings' O(h^3)
             // on curved hanging faces); the footwall's points lie in
             // reversed order on the hanging wall's face of a straight
             // fault if the faces' orientations differ.
-            const Tensor<1, dim> n = m->normal_vector(q);
-            Tensor<1, dim>       s;
-            s[0]            = n[1];
-            s[1]            = -n[0];
             unsigned int qp = q;
             if (m->quadrature_point(q).distance(p->quadrature_point(q)) >
                 1e-8 * minus->diameter())
@@ -335,31 +430,57 @@ namespace lithostress
             Assert(m->quadrature_point(q).distance(p->quadrature_point(qp)) <=
                      1e-6 * minus->diameter(),
                    ExcMessage("the two sides of a fault face do not match"));
+            InterfacePoint point;
+            point.position  = m->quadrature_point(q);
+            point.JxW       = m->JxW(q);
+            point.normal    = m->normal_vector(q);
+            point.shear[0]  = point.normal[1];
+            point.shear[1]  = -point.normal[0];
+            point.depth     = trace.depth(point.position);
+            point.distance  = trace.distance_along(point.position);
             for (unsigned int i = 0; i < n_minus; ++i)
               jump[i] = -(*m)[u_minus].value(i, q);
             for (unsigned int i = 0; i < n_plus; ++i)
               jump[n_minus + i] = (*p)[u_plus].value(i, qp);
-            const double JxW = m->JxW(q);
-            for (unsigned int i = 0; i < n_minus + n_plus; ++i)
+            Tensor<1, dim> w;
+            for (unsigned int i = 0; i < n; ++i)
+              w += values[i] * jump[i];
+            Tensor<1, dim> t;
+            Tensor<2, dim> D;
+            law(index++, point, w, t, D);
+            const Tensor<1, dim> affine = t - D * w;
+            for (unsigned int i = 0; i < n; ++i)
               {
-                const double si = jump[i] * s, ni = jump[i] * n;
-                if (si == 0 && ni == 0)
+                if (jump[i].norm_square() == 0)
                   continue;
-                for (unsigned int j = 0; j < n_minus + n_plus; ++j)
-                  local(i, j) += (fault.shear_stiffness * si * (jump[j] * s) +
-                                  fault.normal_stiffness * ni * (jump[j] * n)) *
-                                 JxW;
+                local_rhs[i] -= jump[i] * affine * point.JxW;
+                local_force[i] += jump[i] * t * point.JxW;
+                const Tensor<1, dim> Dt_vi = transpose(D) * jump[i];
+                for (unsigned int j = 0; j < n; ++j)
+                  local_matrix(i, j) += Dt_vi * jump[j] * point.JxW;
               }
           }
         // The integral over the finer side's face: the coarser side's
         // subface is the same segment.
-        minus->get_dof_indices(minus_dofs);
-        plus->get_dof_indices(plus_dofs);
-        std::copy(minus_dofs.begin(), minus_dofs.end(), dofs.begin());
-        std::copy(plus_dofs.begin(), plus_dofs.end(), dofs.begin() + n_minus);
-        constraints.distribute_local_to_global(local, dofs, matrix);
+        if (matrix && rhs)
+          constraints.distribute_local_to_global(
+            local_matrix, local_rhs, dofs, *matrix, *rhs);
+        else if (matrix)
+          constraints.distribute_local_to_global(local_matrix, dofs, *matrix);
+        else if (rhs)
+          constraints.distribute_local_to_global(local_rhs,
+                                                 dofs,
+                                                 *rhs,
+                                                 local_matrix);
+        if (force)
+          constraints.distribute_local_to_global(local_force, dofs, *force);
       });
-    matrix.compress(VectorOperation::add);
+    if (matrix)
+      matrix->compress(VectorOperation::add);
+    if (rhs)
+      rhs->compress(VectorOperation::add);
+    if (force)
+      force->compress(VectorOperation::add);
   }
 
   template <int dim>

@@ -15,4 +15,19 @@ namespace lithostress
   {
     return direction * (p[0] - x_at(p[1])) > 0;
   }
+
+  double
+  FaultTrace::distance_along(const Point<2> &p) const
+  {
+    return depth(p) / std::sin(dip);
+  }
+
+  Tensor<1, 2>
+  FaultTrace::down_dip() const
+  {
+    Tensor<1, 2> d;
+    d[0] = direction * std::cos(dip);
+    d[1] = -std::sin(dip);
+    return d;
+  }
 } // namespace lithostress

@@ -365,7 +365,7 @@ namespace lithostress
     const FiniteElementSpace<dim>             &fe_space,
     const StressModel<dim>                    &stress_model,
     const TrilinosWrappers::MPI::Vector       &solution,
-    const std::function<void(double)>         &check_new_mesh) const
+    const std::function<void(double, unsigned int)> &check_new_mesh) const
   {
     if (strategy == Strategy::global)
       {
@@ -394,18 +394,24 @@ namespace lithostress
     // The new mesh's size from the flags: each refined cell becomes 2^dim,
     // each family of 2^dim coarsened cells one.
     tria.prepare_coarsening_and_refinement();
-    double refined = 0, coarsened = 0;
+    double       refined = 0, coarsened = 0;
+    unsigned int deepest = 0;
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           refined += cell->refine_flag_set() ? 1 : 0;
           coarsened += cell->coarsen_flag_set() ? 1 : 0;
+          deepest = std::max<unsigned int>(
+            deepest,
+            cell->level() + (cell->refine_flag_set() ? 1 : 0) -
+              (cell->coarsen_flag_set() ? 1 : 0));
         }
     const unsigned int children = GeometryInfo<dim>::max_children_per_cell;
     check_new_mesh(
       tria.n_global_active_cells() +
       Utilities::MPI::sum((children - 1) * (refined - coarsened / children),
-                          tria.get_communicator()));
+                          tria.get_communicator()),
+      Utilities::MPI::max(deepest, tria.get_communicator()) + 1);
     tria.execute_coarsening_and_refinement();
   }
 

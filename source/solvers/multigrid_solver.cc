@@ -1,3 +1,5 @@
+#include <cmath>
+
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -376,6 +378,19 @@ namespace lithostress
 
   template <int dim>
   MatrixFreeMultigridSolver<dim>::~MatrixFreeMultigridSolver() = default;
+
+  template <int dim>
+  double
+  MatrixFreeMultigridSolver<dim>::memory_of_levels(
+    const double       n_coarse_cells,
+    const unsigned int n_levels) const
+  {
+    if (!settings.global_coarsening)
+      return 0;
+    const double children = GeometryInfo<dim>::max_children_per_cell;
+    return 3 * sizeof(unsigned int) * n_coarse_cells *
+           (std::pow(children, n_levels) - 1) / (children - 1);
+  }
 
   template <int dim>
   bool

@@ -38,10 +38,11 @@ namespace lithostress
 
     /**
      * Throw an InputError on all ranks if a mesh of @p cells active cells
-     * and @p dofs DoFs, solved by @p solver with @p bytes_per_dof, would
-     * exceed the limit. @p mesh says which mesh ("the mesh of cycle 3"),
-     * @p entries which parameters make it smaller. Needs the same
-     * arguments on all ranks.
+     * and @p dofs DoFs, solved by @p solver with @p bytes_per_dof and
+     * @p level_bytes for the mesh's depth (LinearSolver::memory_of_levels,
+     * whole run), would exceed the limit. @p mesh says which mesh ("the
+     * mesh of cycle 3"), @p entries which parameters make it smaller.
+     * Needs the same arguments on all ranks.
      */
     void
     check(const std::string &mesh,
@@ -49,6 +50,7 @@ namespace lithostress
           const double       dofs,
           const std::string &solver,
           const double       bytes_per_dof,
+          const double       level_bytes,
           const std::string &entries) const;
 
     /** Memory of a run with @p dofs DoFs on @p ranks ranks [bytes]. */

@@ -6,7 +6,10 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <deal.II/lac/trilinos_vector.h>
+
 #include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/faults/coulomb_friction.h>
 #include <lithostress/faults/fault_trace.h>
 
 #include <functional>
@@ -39,6 +42,9 @@ namespace lithostress
    * that every constraint points from the hanging wall, or from inside a
    * fine footwall face, towards footwall nodes: no cycles, and the same
    * constraints on every rank.
+   * `frictional`: the elastic law with Coulomb sliding (CoulombFriction),
+   * a nonlinear law solved by FrictionalSlidingSolver through
+   * assemble_interface().
    */
   template <int dim>
   class FaultInterface
@@ -48,8 +54,35 @@ namespace lithostress
     enum class Law
     {
       locked,
-      elastic
+      elastic,
+      frictional
     };
+
+    /** A point of the interface quadrature (on the finer side's face). */
+    struct InterfacePoint
+    {
+      Point<dim> position;
+      double     JxW = 0;
+      /** n: the footwall's outward normal (into the hanging wall); s: n
+       * turned clockwise, the law's shear direction. */
+      Tensor<1, dim> normal, shear;
+      /** Depth below the top surface and distance along the fault from
+       * its surface trace [m]. */
+      double depth = 0, distance = 0;
+    };
+
+    /**
+     * An interface law at the point number @p index of this rank (in the
+     * order of interface_quadrature()): for the jump @p jump = u(hanging
+     * wall) − u(footwall) it sets the traction @p traction = σ n on the
+     * footwall's face and its derivative @p tangent = ∂t/∂w, in the
+     * (x, y) frame.
+     */
+    using PointLaw = std::function<void(const unsigned int    index,
+                                        const InterfacePoint &point,
+                                        const Tensor<1, dim> &jump,
+                                        Tensor<1, dim>       &traction,
+                                        Tensor<2, dim>       &tangent)>;
 
     /** Declare `Faults` with a subsection per name of `Faults/Names` in
      * @p first_pass. */
@@ -85,9 +118,31 @@ namespace lithostress
                     const FiniteElementSpace<dim> &fe_space,
                     AffineConstraints<double>     &constraints) const;
 
-    /** Whether a fault adds face terms to the matrix (an elastic law). */
+    /** Whether a fault adds face terms to the matrix (an elastic or
+     * frictional law). */
     bool
     has_face_terms() const;
+
+    /** Whether the fault slides by Coulomb friction (a nonlinear law). */
+    bool
+    frictional() const
+    {
+      return !faults.empty() && faults.front().law == Law::frictional;
+    }
+
+    /** The friction law of a frictional fault. */
+    const CoulombFriction &
+    friction() const
+    {
+      return faults.front().friction;
+    }
+
+    /** The trace of the model's fault. */
+    const FaultTrace &
+    trace() const
+    {
+      return faults.front().trace;
+    }
 
     /** The DoFs of each locally owned footwall cell together with those of
      * its hanging-wall neighbours across fault faces with face terms: the
@@ -102,21 +157,51 @@ namespace lithostress
     interface_points(const DoFHandler<dim>         &dof_handler,
                      const FiniteElementSpace<dim> &fe_space) const;
 
-    /** Add the face terms of elastic faults to @p matrix (compressed
-     * again afterwards), through @p constraints. */
+    /** Add the face terms of elastic faults to @p matrix (if given;
+     * compressed again afterwards) and what prescribed displacements on
+     * their DoFs contribute through them to @p rhs, via @p constraints. */
     void
     assemble(const DoFHandler<dim>           &dof_handler,
              const FiniteElementSpace<dim>   &fe_space,
              const AffineConstraints<double> &constraints,
-             TrilinosWrappers::SparseMatrix  &matrix) const;
+             TrilinosWrappers::SparseMatrix  *matrix,
+             TrilinosWrappers::MPI::Vector   &rhs) const;
+
+    /**
+     * The interface law @p law at every interface point, for the jump of
+     * @p solution (ghosted; nullptr = zero jump), added through
+     * @p constraints to whichever of these is given: @p matrix gets
+     * ∫ [v]·D [u] ds; @p rhs gets −∫ [v]·(t − D w) ds, so that the
+     * law's linearisation at w, t(w') ≈ t + D (w' − w), is an affine law
+     * of the next solution (with the inhomogeneities of @p constraints);
+     * @p force gets ∫ [v]·t ds, the interface's internal force
+     * (condensed, without inhomogeneities). [v] = v⁺ − v⁻. Compresses
+     * what it adds to.
+     */
+    void
+    assemble_interface(const DoFHandler<dim>               &dof_handler,
+                       const FiniteElementSpace<dim>       &fe_space,
+                       const AffineConstraints<double>     &constraints,
+                       const TrilinosWrappers::MPI::Vector *solution,
+                       const PointLaw                      &law,
+                       TrilinosWrappers::SparseMatrix      *matrix,
+                       TrilinosWrappers::MPI::Vector       *rhs,
+                       TrilinosWrappers::MPI::Vector       *force) const;
+
+    /** This rank's interface points, in the order in which
+     * assemble_interface() numbers them. */
+    std::vector<InterfacePoint>
+    interface_quadrature(const DoFHandler<dim>         &dof_handler,
+                         const FiniteElementSpace<dim> &fe_space) const;
 
   private:
     struct Fault
     {
       FaultTrace trace;
       Law        law = Law::locked;
-      /** k_s, k_n per unit fault area [Pa/m] (elastic law). */
-      double shear_stiffness = 0, normal_stiffness = 0;
+      /** k_s, k_n per unit fault area [Pa/m] (elastic and frictional
+       * laws), μ and the effective normal stress's terms (frictional). */
+      CoulombFriction friction;
     };
 
     /** Call @p pair(minus cell, face, plus cell, plus face, subface of the

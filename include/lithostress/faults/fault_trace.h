@@ -2,6 +2,7 @@
 #define lithostress_faults_fault_trace_h
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 
 #include <string>
 
@@ -36,6 +37,23 @@ namespace lithostress
     /** Whether @p p lies in the hanging wall (else in the footwall). */
     bool
     in_hanging_wall(const Point<2> &p) const;
+
+    /** Distance along the fault from its surface trace to the point of
+     * the fault at the height of @p p [m]. */
+    double
+    distance_along(const Point<2> &p) const;
+
+    /** Depth of @p p below the top surface [m]. */
+    double
+    depth(const Point<2> &p) const
+    {
+      return top_y - p[1];
+    }
+
+    /** The unit vector along the fault pointing down dip: slip w·d > 0
+     * moves the hanging wall down (normal sense), < 0 up (reverse). */
+    Tensor<1, 2>
+    down_dip() const;
   };
 } // namespace lithostress
 

@@ -53,7 +53,8 @@ namespace lithostress
      * Refine @p tria once, as configured; @p solution has ghost values.
      * Once the cells are marked, and before the mesh changes,
      * @p check_new_mesh is called on all ranks with the number of active
-     * cells the new mesh will have (the memory check; it may throw).
+     * cells and of levels the new mesh will have (the memory check; it may
+     * throw).
      */
     void
     refine(parallel::distributed::Triangulation<dim> &tria,
@@ -61,7 +62,7 @@ namespace lithostress
            const FiniteElementSpace<dim>             &fe_space,
            const StressModel<dim>                    &stress_model,
            const TrilinosWrappers::MPI::Vector       &solution,
-           const std::function<void(double)>         &check_new_mesh) const;
+           const std::function<void(double, unsigned int)> &check_new_mesh) const;
 
     /** The error indicator per active cell (zero on non-owned cells). */
     Vector<float>

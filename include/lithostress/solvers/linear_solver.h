@@ -26,6 +26,9 @@ namespace lithostress
   {
     std::string  solver;
     unsigned int iterations     = 0;
+    /** Nonlinear iterations and linear solves (a frictional fault's
+     * sliding solver; 0 and 1 for a linear solve). */
+    unsigned int nonlinear_iterations = 0, linear_solves = 1;
     double       setup_time     = 0;
     double       solve_time     = 0;
     double       final_residual = 0;
@@ -172,6 +175,21 @@ namespace lithostress
      */
     virtual double
     memory_per_dof() const = 0;
+
+    /**
+     * Memory the solver needs for a mesh of @p n_levels levels on
+     * @p n_coarse_cells coarse cells, whatever its DoFs [bytes, whole run]:
+     * zero unless the solver's set-up grows with the depth of the mesh
+     * (the global-coarsening multigrid of deal.II 9.4).
+     */
+    virtual double
+    memory_of_levels(const double       n_coarse_cells,
+                     const unsigned int n_levels) const
+    {
+      (void)n_coarse_cells;
+      (void)n_levels;
+      return 0;
+    }
 
     /** Prepare the DoF handler after distribute_dofs() (a geometric
      * multigrid numbers the DoFs of every level). */

@@ -1,0 +1,90 @@
+#ifndef lithostress_faults_coulomb_friction_h
+#define lithostress_faults_coulomb_friction_h
+
+#include <deal.II/base/tensor.h>
+
+#include <string>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /** The state of a point of a frictional fault. */
+  enum class SlipState
+  {
+    /** |τ| < τ_F: the interface deforms elastically. */
+    stuck,
+    /** |τ| = τ_F: the fault slides, the slip grows. */
+    sliding,
+    /** σ_n,eff ≥ 0: the fault is in tension and carries no shear. */
+    open
+  };
+
+  /** "stuck", "sliding" or "open" (the `state` column of fault.csv). */
+  std::string
+  to_string(const SlipState state);
+
+  /**
+   * Coulomb friction on a fault as an elastic–perfectly-plastic interface
+   * law (SPEC §3.5, thesis §5.5 and FSHEAR), in the fault's local frame:
+   * w = (w_s, w_n) the jump u(hanging wall) − u(footwall) along the shear
+   * direction s and the normal n (from the footwall into the hanging wall),
+   * p the accumulated (plastic) slip, a history variable. The model's
+   * tractions are
+   *
+   *   t_n = k_n w_n,   t_s = k_s (w_s − p),
+   *
+   * and the friction sees the effective normal stress
+   *   σ_n,eff = t_n − (ρ_l − ρ_w) g d
+   * at depth d: the model's traction, plus an optional lithostatic term
+   * (the thesis's ρ_l = 2911 kg m⁻³ where body forces are not in the model)
+   * less an optional hydrostatic pore pressure (ρ_w = 1000 kg m⁻³).
+   * The shear traction may not exceed τ_F = μ max(0, −σ_n,eff); a fault in
+   * tension (σ_n,eff ≥ 0) carries no shear (FSHEAR's SNAV = 0), its normal
+   * spring stays. respond() is the return mapping from the slip @p p_old of
+   * the last converged state; its tangent is the consistent one
+   * (non-symmetric while sliding: the limit depends on w_n).
+   */
+  struct CoulombFriction
+  {
+    /** k_s, k_n per unit fault area [Pa/m]. */
+    double shear_stiffness = 0, normal_stiffness = 0;
+    /** μ. */
+    double friction_coefficient = 0.1;
+    /** ρ_l and ρ_w [kg m⁻³] (0 = no such term) and g [m s⁻²]. */
+    double lithostatic_density = 2911, pore_fluid_density = 1000,
+           gravity = 9.81;
+
+    /** The response at one point of the fault. */
+    struct Response
+    {
+      /** t_s and the model's t_n [Pa]. */
+      double shear_traction = 0, normal_traction = 0;
+      /** σ_n,eff and τ_F [Pa]. */
+      double effective_normal_stress = 0, friction_limit = 0;
+      /** d(t_s, t_n)/d(w_s, w_n): index 0 = shear, 1 = normal. */
+      Tensor<2, 2> tangent;
+      /** The accumulated slip p after this response [m]. */
+      double plastic_slip = 0;
+      SlipState state = SlipState::stuck;
+    };
+
+    /** (ρ_l − ρ_w) g d: what the lithostatic load less the pore pressure
+     * adds to the compression at depth @p depth [Pa]. */
+    double
+    overburden(const double depth) const
+    {
+      return (lithostatic_density - pore_fluid_density) * gravity * depth;
+    }
+
+    /** The return mapping for the jump (@p w_s, @p w_n) at @p depth, from
+     * the accumulated slip @p p_old. */
+    Response
+    respond(const double w_s,
+            const double w_n,
+            const double p_old,
+            const double depth) const;
+  };
+} // namespace lithostress
+
+#endif

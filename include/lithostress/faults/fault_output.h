@@ -1,0 +1,85 @@
+#ifndef lithostress_faults_fault_output_h
+#define lithostress_faults_fault_output_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/faults/fault_interface.h>
+#include <lithostress/faults/fault_slip_history.h>
+
+#include <string>
+#include <vector>
+
+namespace lithostress
+{
+  /**
+   * The state of a fault at one interface point, as fault.csv gives it:
+   * s = distance along the fault from its surface trace [m]; slip = w·d
+   * (d down dip: positive = normal sense, hanging wall down) and
+   * opening = w·n [m] (w = u(hanging wall) − u(footwall), n from the
+   * footwall into the hanging wall); the traction σ n on the footwall's
+   * face, shear_traction = its component along d and normal_traction
+   * along n [Pa, tension positive] — for a frictional fault the effective
+   * normal stress σ_n,eff the friction law sees (the model's traction plus
+   * the lithostatic term less the pore pressure); state = stuck, sliding
+   * or open (an elastic fault is always stuck).
+   */
+  struct FaultSample
+  {
+    double    s = 0, x = 0, y = 0, depth = 0;
+    double    slip = 0, opening = 0, shear_traction = 0, normal_traction = 0;
+    double    friction_limit = 0, vertical_jump = 0;
+    SlipState state = SlipState::stuck;
+
+    /** For gathering samples over the ranks. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &s &x &y &depth &slip &opening &shear_traction &normal_traction
+        &friction_limit &vertical_jump &state;
+    }
+  };
+
+  /** The samples at every interface point of the fault (all ranks get
+   * all of them, sorted by s). @p solution is ghosted. */
+  template <int dim>
+  std::vector<FaultSample>
+  sample_fault(const FaultInterface<dim>           &faults,
+               const DoFHandler<dim>               &dof_handler,
+               const FiniteElementSpace<dim>       &fe_space,
+               const TrilinosWrappers::MPI::Vector &solution,
+               const FaultSlipHistory              &history);
+
+  /** Write fault.csv: `s,x,y,slip,opening,shear_traction,normal_traction,
+   * state` (SI units). */
+  void
+  write_fault_csv(const std::string              &filename,
+                  const std::vector<FaultSample> &samples);
+
+  /** What fault_summary.json reports. */
+  struct FaultSummary
+  {
+    /** u_y(footwall) − u_y(hanging wall) at the surface trace [m]
+     * (extrapolated from the two shallowest points): positive when the
+     * hanging wall is downthrown. */
+    double throw_m = 0;
+    /** The deepest point that slides or is open [m] (0: none). */
+    double sliding_depth_m = 0;
+    /** Distance from the surface trace to the smallest Griffith C on the
+     * top surface of the downthrown side [m]; NaN if not computed. */
+    double       tensile_failure_distance_m = 0;
+    unsigned int nonlinear_iterations = 0, linear_solves = 0;
+  };
+
+  /** Throw and sliding depth from @p samples. */
+  FaultSummary
+  summarize_fault(const std::vector<FaultSample> &samples);
+
+  /** Write fault_summary.json. */
+  void
+  write_fault_summary(const std::string &filename, const FaultSummary &summary);
+} // namespace lithostress
+
+#endif

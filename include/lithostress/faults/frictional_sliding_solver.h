@@ -1,0 +1,98 @@
+#ifndef lithostress_faults_frictional_sliding_solver_h
+#define lithostress_faults_frictional_sliding_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <lithostress/faults/fault_interface.h>
+#include <lithostress/faults/fault_slip_history.h>
+#include <lithostress/solvers/linear_solver.h>
+
+#include <functional>
+#include <string>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * Solves the elasticity problem of a model whose fault slides by Coulomb
+   * friction (SPEC §3.5): the bulk is linear, the fault's law
+   * (CoulombFriction) is piecewise linear in the jump, so its
+   * linearisation at an iterate is an affine law per interface point.
+   *
+   * `newton` (default): a semi-smooth Newton method with the consistent
+   * tangent, as the active-set method of deal.II step-42. Its first solve
+   * is the elastic predictor (every point stuck); each further iteration
+   * takes the return mapping at the last iterate (stuck, sliding or open
+   * at each point), solves the system with the tangent K + ∫[v]·D[u] and
+   * the affine part on the right-hand side, and takes the step with a
+   * backtracking line search on the residual norm. It stops when the
+   * residual ‖K u − f + ∫[v]·t(u)‖ (constrained rows left out) is below
+   * the tolerance times ‖f‖ and the excess shear — the largest difference
+   * between the traction of the linearised law the iterate was solved with
+   * and the return mapping's — is below its tolerance: then the states no
+   * longer change and the solution satisfies the law exactly. The tangent
+   * is not symmetric while a point slides (the friction limit depends on
+   * the normal jump): GMRES with the elasticity AMG solves it.
+   *
+   * `thesis`: the iteration of the thesis (§5.5, FSHEAR): the fault stays
+   * elastic in the matrix (CG with AMG set up once), and the shear beyond
+   * the friction limit is removed by equal and opposite forces on the two
+   * sides, times the convergence factor, accumulated in the slip p, re-solved
+   * until the excess shear is below its tolerance. Kept for comparison.
+   */
+  template <int dim>
+  class FrictionalSlidingSolver
+  {
+  public:
+    enum class Method
+    {
+      newton,
+      thesis
+    };
+
+    struct Settings
+    {
+      Method       method                 = Method::newton;
+      unsigned int max_iterations         = 100;
+      double       residual_tolerance     = 1e-9;
+      double       excess_shear_tolerance = 1e3;
+      double       convergence_factor     = 1;
+      bool         line_search            = true;
+      double       linear_tolerance       = 1e-11;
+    };
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    const Settings &
+    settings() const
+    {
+      return parameters;
+    }
+
+    /**
+     * Solve @p problem (its matrix and right-hand side without the
+     * frictional fault) with the fault of @p faults, from the slip of
+     * @p history, which is committed on convergence. @p solution gets the
+     * owned solution with its constraints distributed. @p progress gets a
+     * line per iteration. Throws ComputationError if the iteration does not
+     * converge, with @p solution holding the last iterate.
+     */
+    SolverReport
+    solve(const DiscreteProblem<dim>                &problem,
+          const FaultInterface<dim>                 &faults,
+          FaultSlipHistory                          &history,
+          TrilinosWrappers::MPI::Vector             &solution,
+          const std::function<void(std::string)> &progress) const;
+
+  private:
+    Settings parameters;
+  };
+} // namespace lithostress
+
+#endif

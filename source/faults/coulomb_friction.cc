@@ -1,0 +1,61 @@
+#include <lithostress/faults/coulomb_friction.h>
+
+#include <cmath>
+
+namespace lithostress
+{
+  std::string
+  to_string(const SlipState state)
+  {
+    switch (state)
+      {
+        case SlipState::stuck:
+          return "stuck";
+        case SlipState::sliding:
+          return "sliding";
+        case SlipState::open:
+          return "open";
+      }
+    return "";
+  }
+
+  CoulombFriction::Response
+  CoulombFriction::respond(const double w_s,
+                           const double w_n,
+                           const double p_old,
+                           const double depth) const
+  {
+    Response r;
+    r.normal_traction         = normal_stiffness * w_n;
+    r.effective_normal_stress = r.normal_traction - overburden(depth);
+    r.friction_limit =
+      friction_coefficient * std::max(0.0, -r.effective_normal_stress);
+    r.tangent[1][1]      = normal_stiffness;
+    const double trial_s = shear_stiffness * (w_s - p_old);
+    if (r.effective_normal_stress >= 0)
+      {
+        // In tension: no shear; the slip follows the jump.
+        r.state          = SlipState::open;
+        r.shear_traction = 0;
+        r.plastic_slip   = w_s;
+      }
+    else if (std::abs(trial_s) <= r.friction_limit)
+      {
+        r.state          = SlipState::stuck;
+        r.shear_traction = trial_s;
+        r.plastic_slip   = p_old;
+        r.tangent[0][0]  = shear_stiffness;
+      }
+    else
+      {
+        // Back to the limit in the trial's direction; the limit grows
+        // with compression: dτ/dw_n = -sign(τ) μ k_n.
+        const double sign = trial_s > 0 ? 1. : -1.;
+        r.state           = SlipState::sliding;
+        r.shear_traction  = sign * r.friction_limit;
+        r.plastic_slip    = w_s - r.shear_traction / shear_stiffness;
+        r.tangent[0][1]   = -sign * friction_coefficient * normal_stiffness;
+      }
+    return r;
+  }
+} // namespace lithostress

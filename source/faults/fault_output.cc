@@ -1,0 +1,146 @@
+#include <deal.II/base/mpi.h>
+
+#include <lithostress/faults/fault_output.h>
+#include <lithostress/output/output_file.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
+namespace lithostress
+{
+  template <int dim>
+  std::vector<FaultSample>
+  sample_fault(const FaultInterface<dim>           &faults,
+               const DoFHandler<dim>               &dof_handler,
+               const FiniteElementSpace<dim>       &fe_space,
+               const TrilinosWrappers::MPI::Vector &solution,
+               const FaultSlipHistory              &history)
+  {
+    using InterfacePoint        = typename FaultInterface<dim>::InterfacePoint;
+    const CoulombFriction &law  = faults.friction();
+    const bool frictional       = faults.frictional();
+    const Tensor<1, 2>     down = faults.trace().down_dip();
+    std::vector<FaultSample> samples;
+    faults.assemble_interface(
+      dof_handler,
+      fe_space,
+      AffineConstraints<double>(),
+      &solution,
+      [&](const unsigned int    i,
+          const InterfacePoint &p,
+          const Tensor<1, dim> &w,
+          Tensor<1, dim> &,
+          Tensor<2, dim> &) {
+        FaultSample sample;
+        sample.s             = p.distance;
+        sample.x             = p.position[0];
+        sample.y             = p.position[1];
+        sample.depth         = p.depth;
+        sample.slip          = w[0] * down[0] + w[1] * down[1];
+        sample.opening       = w * p.normal;
+        sample.vertical_jump = w[1];
+        const double w_s = w * p.shear, w_n = w * p.normal;
+        const double slip_p =
+          frictional && i < history.slip.size() ? history.slip[i] : 0;
+        const double t_s = law.shear_stiffness * (w_s - slip_p);
+        sample.shear_traction =
+          t_s * (p.shear[0] * down[0] + p.shear[1] * down[1]);
+        sample.normal_traction = law.normal_stiffness * w_n;
+        if (frictional)
+          {
+            sample.normal_traction -= law.overburden(p.depth);
+            sample.friction_limit =
+              law.friction_coefficient *
+              std::max(0.0, -sample.normal_traction);
+            sample.state = i < history.states.size() ? history.states[i] :
+                                                       SlipState::stuck;
+            if (sample.state == SlipState::open)
+              sample.shear_traction = 0;
+          }
+      },
+      nullptr,
+      nullptr,
+      nullptr);
+    // All ranks' samples, sorted along the fault.
+    const auto all =
+      Utilities::MPI::all_gather(dof_handler.get_communicator(), samples);
+    samples.clear();
+    for (const auto &part : all)
+      samples.insert(samples.end(), part.begin(), part.end());
+    std::sort(samples.begin(),
+              samples.end(),
+              [](const FaultSample &a, const FaultSample &b) {
+                return a.s < b.s || (a.s == b.s && a.x < b.x);
+              });
+    return samples;
+  }
+
+  void
+  write_fault_csv(const std::string              &filename,
+                  const std::vector<FaultSample> &samples)
+  {
+    OutputFile out(filename);
+    out << "s,x,y,slip,opening,shear_traction,normal_traction,state\n"
+        << std::setprecision(10);
+    for (const FaultSample &p : samples)
+      out << p.s << ',' << p.x << ',' << p.y << ',' << p.slip << ','
+          << p.opening << ',' << p.shear_traction << ',' << p.normal_traction
+          << ',' << to_string(p.state) << '\n';
+    out.commit();
+  }
+
+  FaultSummary
+  summarize_fault(const std::vector<FaultSample> &samples)
+  {
+    FaultSummary summary;
+    for (const FaultSample &p : samples)
+      if (p.state != SlipState::stuck)
+        summary.sliding_depth_m = std::max(summary.sliding_depth_m, p.depth);
+    // The vertical jump at s = 0, linear through the two shallowest points
+    // at different s.
+    if (!samples.empty())
+      {
+        const FaultSample &a = samples.front();
+        summary.throw_m      = -a.vertical_jump;
+        for (const FaultSample &b : samples)
+          if (b.s > a.s * (1 + 1e-9) + 1e-9)
+            {
+              const double jump =
+                a.vertical_jump -
+                a.s * (b.vertical_jump - a.vertical_jump) / (b.s - a.s);
+              summary.throw_m = -jump;
+              break;
+            }
+      }
+    return summary;
+  }
+
+  void
+  write_fault_summary(const std::string &filename, const FaultSummary &summary)
+  {
+    OutputFile out(filename);
+    const auto number = [](const double x) {
+      std::ostringstream s;
+      if (std::isfinite(x))
+        s << std::setprecision(10) << x;
+      else
+        s << "null";
+      return s.str();
+    };
+    out << "{\"throw_m\": " << number(summary.throw_m)
+        << ", \"sliding_depth_m\": " << number(summary.sliding_depth_m)
+        << ", \"nonlinear_iterations\": " << summary.nonlinear_iterations
+        << ", \"linear_solves\": " << summary.linear_solves
+        << ", \"tensile_failure_distance_m\": "
+        << number(summary.tensile_failure_distance_m) << "}\n";
+    out.commit();
+  }
+
+  template std::vector<FaultSample>
+  sample_fault(const FaultInterface<2> &,
+               const DoFHandler<2> &,
+               const FiniteElementSpace<2> &,
+               const TrilinosWrappers::MPI::Vector &,
+               const FaultSlipHistory &);
+} // namespace lithostress

@@ -1,0 +1,445 @@
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/faults/frictional_sliding_solver.h>
+#include <lithostress/solvers/amg_solver.h>
+#include <lithostress/solvers/rigid_body_modes.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  FrictionalSlidingSolver<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Faults");
+    prm.enter_subsection("Sliding solver");
+    prm.declare_entry("Method",
+                      "newton",
+                      Patterns::Selection("newton|thesis"),
+                      "How a frictional fault's sliding is found: newton = "
+                      "semi-smooth Newton with the consistent tangent and a "
+                      "line search; thesis = the thesis's iteration (§5.5, "
+                      "FSHEAR): excess shear removed by nodal forces times "
+                      "the Convergence factor, re-solved with the elastic "
+                      "fault.");
+    prm.declare_entry("Maximum iterations",
+                      "100",
+                      Patterns::Integer(1),
+                      "Nonlinear iterations (linear solves) before the run "
+                      "stops with the last iterate written out.");
+    prm.declare_entry("Residual tolerance",
+                      "1e-9",
+                      Patterns::Double(0),
+                      "Newton stops when the residual norm is below this "
+                      "times the norm of the right-hand side (and the excess "
+                      "shear below its tolerance).");
+    prm.declare_entry("Excess shear tolerance",
+                      "1e3",
+                      Patterns::Double(0),
+                      "[Pa] Both methods stop when the shear traction "
+                      "exceeds the friction limit (thesis) or the law the "
+                      "iterate was solved with (Newton) by less than this "
+                      "everywhere on the fault.");
+    prm.declare_entry("Convergence factor",
+                      "1",
+                      Patterns::Double(0),
+                      "Thesis method: the excess-shear forces are multiplied "
+                      "by this (the thesis used 15 for k_s = 5e10 N/m).");
+    prm.declare_entry("Line search",
+                      "true",
+                      Patterns::Bool(),
+                      "Newton: halve the step until the residual norm "
+                      "falls (at most 6 times).");
+    prm.declare_entry("Linear solver tolerance",
+                      "1e-11",
+                      Patterns::Double(0),
+                      "Relative tolerance of each linear solve (GMRES or CG "
+                      "with AMG).");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  FrictionalSlidingSolver<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Faults");
+    prm.enter_subsection("Sliding solver");
+    parameters.method = prm.get("Method") == "thesis" ? Method::thesis :
+                                                        Method::newton;
+    parameters.max_iterations         = prm.get_integer("Maximum iterations");
+    parameters.residual_tolerance     = prm.get_double("Residual tolerance");
+    parameters.excess_shear_tolerance = prm.get_double("Excess shear tolerance");
+    parameters.convergence_factor     = prm.get_double("Convergence factor");
+    parameters.line_search            = prm.get_bool("Line search");
+    parameters.linear_tolerance = prm.get_double("Linear solver tolerance");
+    if (!(parameters.convergence_factor > 0))
+      throw_input_error("Faults/Sliding solver/Convergence factor",
+                        "must be positive");
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    /** Σ_ab m[a][b] e_a ⊗ e_b with e_0 = @p s, e_1 = @p n: a tensor of the
+     * (shear, normal) frame in the (x, y) frame. */
+    template <int dim>
+    Tensor<2, dim>
+    from_local_frame(const Tensor<2, 2>   &m,
+                     const Tensor<1, dim> &s,
+                     const Tensor<1, dim> &n)
+    {
+      const Tensor<1, dim> e[2] = {s, n};
+      Tensor<2, dim>       result;
+      for (unsigned int a = 0; a < 2; ++a)
+        for (unsigned int b = 0; b < 2; ++b)
+          result += m[a][b] * outer_product(e[a], e[b]);
+      return result;
+    }
+  } // namespace
+
+  template <int dim>
+  SolverReport
+  FrictionalSlidingSolver<dim>::solve(
+    const DiscreteProblem<dim>             &problem,
+    const FaultInterface<dim>              &faults,
+    FaultSlipHistory                       &history,
+    TrilinosWrappers::MPI::Vector          &solution,
+    const std::function<void(std::string)> &progress) const
+  {
+    using InterfacePoint = typename FaultInterface<dim>::InterfacePoint;
+    const DoFHandler<dim>           &dof_handler = problem.dof_handler;
+    const FiniteElementSpace<dim>   &fe_space    = problem.fe_space;
+    const LinearSystem<dim>         &system      = problem.system;
+    const AffineConstraints<double> &constraints = system.constraints;
+    const MPI_Comm                   communicator =
+      dof_handler.get_communicator();
+    const CoulombFriction &law    = faults.friction();
+    const bool             newton = parameters.method == Method::newton;
+    SolverReport           report;
+    report.solver        = newton ? "newton" : "thesis";
+    report.linear_solves = 0;
+    Timer timer(communicator, true);
+
+    const unsigned int n_points =
+      faults.interface_quadrature(dof_handler, fe_space).size();
+    history.reinit(n_points, problem.operator_version >> 32);
+    // The law each solve linearised (t = D w + c per point) and the return
+    // mapping's response at the last evaluated iterate.
+    std::vector<Tensor<2, dim>>            tangents(n_points);
+    std::vector<Tensor<1, dim>>            affine(n_points);
+    std::vector<CoulombFriction::Response> responses(n_points);
+    // The thesis method's slip, updated by the excess shear.
+    std::vector<double> thesis_slip = history.slip;
+    std::vector<bool>   slid(n_points, false);
+
+    const auto stuck_law = [&](const std::vector<double> &slip) {
+      return [&law, &slip, &tangents, &affine](const unsigned int    i,
+                                                 const InterfacePoint &p,
+                                                 const Tensor<1, dim> &w,
+                                                 Tensor<1, dim>       &t,
+                                                 Tensor<2, dim>       &D) {
+        D = law.shear_stiffness * outer_product(p.shear, p.shear) +
+            law.normal_stiffness * outer_product(p.normal, p.normal);
+        t           = D * w - law.shear_stiffness * slip[i] * p.shear;
+        tangents[i] = D;
+        affine[i]   = t - D * w;
+      };
+    };
+    const auto return_mapping = [&](const unsigned int    i,
+                                    const InterfacePoint &p,
+                                    const Tensor<1, dim> &w,
+                                    Tensor<1, dim>       &t,
+                                    Tensor<2, dim>       &D) {
+      responses[i] =
+        law.respond(w * p.shear, w * p.normal, history.slip[i], p.depth);
+      t = responses[i].shear_traction * p.shear +
+          responses[i].normal_traction * p.normal;
+      D = from_local_frame<dim>(responses[i].tangent, p.shear, p.normal);
+    };
+    const auto newton_law = [&](const unsigned int    i,
+                                const InterfacePoint &p,
+                                const Tensor<1, dim> &w,
+                                Tensor<1, dim>       &t,
+                                Tensor<2, dim>       &D) {
+      return_mapping(i, p, w, t, D);
+      tangents[i] = D;
+      affine[i]   = t - D * w;
+    };
+
+    TrilinosWrappers::MPI::Vector u(system.locally_owned, communicator),
+      u_ghost(system.locally_owned, system.locally_relevant, communicator),
+      rhs(system.rhs), residual(system.rhs), force(system.rhs);
+    u = 0;
+    constraints.distribute(u);
+    u_ghost        = u;
+    const double f = std::max(system.rhs.l2_norm(), 1e-300);
+    check_right_hand_side(f);
+
+    // The residual norm at u (ghosted as u_ghost) with the return mapping
+    // from the committed slip, and the largest excess shear against the law
+    // of the last solve.
+    double excess = 0;
+    const auto residual_norm =
+      [&](const TrilinosWrappers::MPI::Vector &owned) {
+        u_ghost = owned;
+        system.matrix.vmult(residual, owned);
+        residual -= system.rhs;
+        force     = 0;
+        double ex = 0;
+        faults.assemble_interface(
+          dof_handler,
+          fe_space,
+          constraints,
+          &u_ghost,
+          [&](const unsigned int    i,
+              const InterfacePoint &p,
+              const Tensor<1, dim> &w,
+              Tensor<1, dim>       &t,
+              Tensor<2, dim>       &D) {
+            return_mapping(i, p, w, t, D);
+            ex = std::max(ex,
+                          std::abs((t - tangents[i] * w - affine[i]) * p.shear));
+          },
+          nullptr,
+          nullptr,
+          &force);
+        residual += force;
+        constraints.set_zero(residual);
+        excess = Utilities::MPI::max(ex, communicator);
+        return residual.l2_norm();
+      };
+
+    TrilinosWrappers::SparseMatrix              matrix;
+    std::unique_ptr<Epetra_MultiVector>         modes;
+    TrilinosWrappers::PreconditionAMG           amg;
+    const typename AMGSolver<dim>::Settings     amg_settings;
+    const auto set_up = [&](const auto &law_at_point) {
+      matrix.copy_from(system.matrix);
+      rhs = system.rhs;
+      faults.assemble_interface(dof_handler,
+                                fe_space,
+                                constraints,
+                                &u_ghost,
+                                law_at_point,
+                                &matrix,
+                                &rhs,
+                                nullptr);
+      if (!modes)
+        modes = make_rigid_body_modes(dof_handler,
+                                      fe_space,
+                                      matrix.trilinos_matrix().DomainMap());
+      initialize_elasticity_amg<dim>(amg, matrix, *modes, amg_settings, true);
+    };
+    const auto linear_solve = [&](TrilinosWrappers::MPI::Vector &x,
+                                  const bool symmetric) {
+      SolverControl control(5000,
+                            parameters.linear_tolerance * rhs.l2_norm(),
+                            false,
+                            false);
+      try
+        {
+          if (symmetric)
+            {
+              SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+              stop_on_signal(cg, communicator);
+              cg.solve(matrix, x, rhs, amg);
+            }
+          else
+            {
+              SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+                control,
+                typename SolverGMRES<
+                  TrilinosWrappers::MPI::Vector>::AdditionalData(100));
+              stop_on_signal(gmres, communicator);
+              gmres.solve(matrix, x, rhs, amg);
+            }
+        }
+      catch (const SolverControl::NoConvergence &exc)
+        {
+          rethrow_solver_failure(exc,
+                                 communicator,
+                                 symmetric ? "CG with AMG" : "GMRES with AMG",
+                                 rhs.l2_norm(),
+                                 "lower Faults/Sliding solver/Linear solver "
+                                 "tolerance");
+        }
+      constraints.distribute(x);
+      report.iterations += iterations_of(control);
+      ++report.linear_solves;
+    };
+    const auto count_states = [&]() {
+      unsigned int n[3] = {0, 0, 0};
+      for (const auto &r : responses)
+        ++n[static_cast<int>(r.state)];
+      std::ostringstream out;
+      out << Utilities::MPI::sum(n[1], communicator) << " sliding, "
+          << Utilities::MPI::sum(n[2], communicator) << " open of "
+          << Utilities::MPI::sum(n_points, communicator) << " points";
+      return out.str();
+    };
+
+    double       r_norm    = 0;
+    bool         converged = false;
+    unsigned int iteration = 0;
+    if (newton)
+      {
+        // The elastic predictor, then Newton steps.
+        TrilinosWrappers::MPI::Vector x(u), step(u), trial(u);
+        r_norm = residual_norm(u);
+        for (iteration = 1; iteration <= parameters.max_iterations;
+             ++iteration)
+          {
+            if (iteration == 1)
+              set_up(stuck_law(history.slip));
+            else
+              set_up(newton_law);
+            x = u;
+            linear_solve(x, iteration == 1);
+            step = x;
+            step -= u;
+            double alpha = 1, trial_norm = 0;
+            for (unsigned int halving = 0;; ++halving)
+              {
+                trial = u;
+                trial.add(alpha, step);
+                trial_norm = residual_norm(trial);
+                if (!parameters.line_search || iteration == 1 ||
+                    trial_norm <= (1 - 1e-4 * alpha) * r_norm || halving == 6)
+                  break;
+                alpha /= 2;
+              }
+            u      = trial;
+            r_norm = trial_norm;
+            std::ostringstream line;
+            line << "  sliding: Newton iteration " << iteration
+                 << ": residual " << std::setprecision(3) << r_norm / f
+                 << ", excess shear " << excess << " Pa, " << count_states()
+                 << (alpha < 1 ? ", step " + std::to_string(alpha) : "");
+            progress(line.str());
+            if (r_norm <= parameters.residual_tolerance * f &&
+                excess <= parameters.excess_shear_tolerance)
+              {
+                converged = true;
+                break;
+              }
+          }
+        if (converged)
+          for (unsigned int i = 0; i < n_points; ++i)
+            {
+              history.slip[i]   = responses[i].plastic_slip;
+              history.states[i] = responses[i].state;
+            }
+      }
+    else
+      {
+        // The fault stays elastic in the matrix; its excess shear moves
+        // into the slip.
+        set_up(stuck_law(thesis_slip));
+        for (iteration = 1; iteration <= parameters.max_iterations;
+             ++iteration)
+          {
+            if (iteration > 1)
+              {
+                rhs = system.rhs;
+                faults.assemble_interface(dof_handler,
+                                          fe_space,
+                                          constraints,
+                                          nullptr,
+                                          stuck_law(thesis_slip),
+                                          nullptr,
+                                          &rhs,
+                                          nullptr);
+              }
+            linear_solve(u, true);
+            u_ghost   = u;
+            double ex = 0;
+            faults.assemble_interface(
+              dof_handler,
+              fe_space,
+              constraints,
+              &u_ghost,
+              [&](const unsigned int    i,
+                  const InterfacePoint &p,
+                  const Tensor<1, dim> &w,
+                  Tensor<1, dim> &,
+                  Tensor<2, dim> &) {
+                // The excess over the limit at the elastic traction.
+                CoulombFriction::Response &r = responses[i];
+                r = law.respond(w * p.shear, w * p.normal, thesis_slip[i],
+                                p.depth);
+                const double tau =
+                  law.shear_stiffness * (w * p.shear - thesis_slip[i]);
+                double e = 0;
+                if (r.state == SlipState::open)
+                  e = tau;
+                else if (r.state == SlipState::sliding)
+                  e = tau - (tau > 0 ? 1 : -1) * r.friction_limit;
+                ex = std::max(ex, std::abs(e));
+                if (e != 0)
+                  slid[i] = true;
+                thesis_slip[i] += parameters.convergence_factor * e /
+                                  law.shear_stiffness;
+                r.state = r.state == SlipState::open ? SlipState::open :
+                          slid[i]                    ? SlipState::sliding :
+                                                       SlipState::stuck;
+              },
+              nullptr,
+              nullptr,
+              nullptr);
+            excess = Utilities::MPI::max(ex, communicator);
+            std::ostringstream line;
+            line << "  sliding: thesis iteration " << iteration
+                 << ": excess shear " << std::setprecision(3) << excess
+                 << " Pa, " << count_states();
+            if (iteration == 1 || iteration % 50 == 0 ||
+                excess <= parameters.excess_shear_tolerance)
+              progress(line.str());
+            if (excess <= parameters.excess_shear_tolerance)
+              {
+                converged = true;
+                break;
+              }
+          }
+        r_norm = residual_norm(u);
+        if (converged)
+          for (unsigned int i = 0; i < n_points; ++i)
+            {
+              // The slip before the last (sub-tolerance) correction.
+              history.slip[i]   = responses[i].plastic_slip;
+              history.states[i] = responses[i].state;
+            }
+      }
+    report.nonlinear_iterations = std::min(iteration, parameters.max_iterations);
+    report.final_residual       = r_norm / f;
+    report.solve_time           = timer.wall_time();
+    solution                    = u;
+    if (!converged)
+      {
+        std::ostringstream what;
+        what << std::setprecision(3) << "the frictional sliding on fault <"
+             << faults.trace().name << "> did not converge in "
+             << parameters.max_iterations << " " << report.solver
+             << " iterations (residual " << r_norm / f << " of the load, excess "
+             << "shear " << excess
+             << " Pa); the last iterate is written out. Raise Faults/Sliding "
+                "solver/Maximum iterations"
+             << (newton ? "" : " or the Convergence factor");
+        throw ComputationError(what.str());
+      }
+    return report;
+  }
+
+  template class FrictionalSlidingSolver<2>;
+} // namespace lithostress
