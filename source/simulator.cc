@@ -470,11 +470,12 @@ namespace lithostress
       {
         try
           {
-            statistics.solver = sliding_solver.solve(
+            sliding_solver.solve(
               problem,
               faults,
               slip_history,
               owned_solution,
+              statistics.solver,
               [&](const std::string &line) { log << line << std::endl; });
           }
         catch (const ComputationError &)

@@ -58,6 +58,7 @@ namespace lithostress
             if (sample.state == SlipState::open)
               sample.shear_traction = 0;
           }
+        samples.push_back(sample);
       },
       nullptr,
       nullptr,

@@ -110,12 +110,13 @@ namespace lithostress
   } // namespace
 
   template <int dim>
-  SolverReport
+  void
   FrictionalSlidingSolver<dim>::solve(
     const DiscreteProblem<dim>             &problem,
     const FaultInterface<dim>              &faults,
     FaultSlipHistory                       &history,
     TrilinosWrappers::MPI::Vector          &solution,
+    SolverReport                           &report,
     const std::function<void(std::string)> &progress) const
   {
     using InterfacePoint = typename FaultInterface<dim>::InterfacePoint;
@@ -127,7 +128,7 @@ namespace lithostress
       dof_handler.get_communicator();
     const CoulombFriction &law    = faults.friction();
     const bool             newton = parameters.method == Method::newton;
-    SolverReport           report;
+    report               = SolverReport();
     report.solver        = newton ? "newton" : "thesis";
     report.linear_solves = 0;
     Timer timer(communicator, true);
@@ -335,12 +336,6 @@ namespace lithostress
                 break;
               }
           }
-        if (converged)
-          for (unsigned int i = 0; i < n_points; ++i)
-            {
-              history.slip[i]   = responses[i].plastic_slip;
-              history.states[i] = responses[i].state;
-            }
       }
     else
       {
@@ -412,14 +407,17 @@ namespace lithostress
                 break;
               }
           }
-        r_norm = residual_norm(u);
-        if (converged)
-          for (unsigned int i = 0; i < n_points; ++i)
-            {
-              // The slip before the last (sub-tolerance) correction.
-              history.slip[i]   = responses[i].plastic_slip;
-              history.states[i] = responses[i].state;
-            }
+        // The residual with the states of the thesis's last iterate.
+        const std::vector<CoulombFriction::Response> thesis = responses;
+        r_norm                                              = residual_norm(u);
+        responses                                           = thesis;
+      }
+    // Commit (or, if not converged, show) the last iterate's slip and
+    // states.
+    for (unsigned int i = 0; i < n_points; ++i)
+      {
+        history.slip[i]   = responses[i].plastic_slip;
+        history.states[i] = responses[i].state;
       }
     report.nonlinear_iterations = std::min(iteration, parameters.max_iterations);
     report.final_residual       = r_norm / f;
@@ -438,7 +436,6 @@ namespace lithostress
              << (newton ? "" : " or the Convergence factor");
         throw ComputationError(what.str());
       }
-    return report;
   }
 
   template class FrictionalSlidingSolver<2>;

@@ -28,6 +28,19 @@ traction tau on top, base and right side, k_s given the thesis's way as an
 element stiffness of 1e10 N/m for 1 km fault elements, i.e. 1e7 Pa/m):
 sigma_xy = tau everywhere, u = (0, tau x/G) plus the slip tau/k_s in the
 hanging wall.
+
+A frictional fault (the interface patch test, tests/faults/frictional_fault.prm):
+the same block and vertical fault with nu = 0 (so that a uniform stress
+fits the fixed left side), k_s = 1e7 Pa/m, k_n = 1e10 Pa/m, mu = 0.6 and
+no lithostatic or pore-pressure term, under a normal pressure P = 100 MPa.
+Sliding: the right side moved up by d = 40 m, top and base loaded with
+tau_F = mu P; the fault must slide with shear traction exactly mu |sigma_n|
+everywhere, and the hanging wall moves up by the slip d - tau_F L/G
+relative to the footwall (u_y = tau_F x/G in the footwall). Stuck:
+tractions tau = 30 MPa < mu P on top, base and right side: slip tau/k_s,
+every point stuck, one solve. Both are linear in each block, so exact on
+every mesh (two cycles, 1 and 2 ranks). The thesis iteration (excess shear
+as forces, factor 1) reaches the same state within its stopping tolerance.
 """
 import os
 import re
@@ -114,6 +127,108 @@ for ranks in (1, 2):
     check(len(rows) == 6 and worst < 1e-9,
           "elastic fault in shear, %d rank(s): slip %.9f m (tau/k_s = %.9f m), sigma_xy = tau, "
           "largest relative difference %.1e" % (ranks, slip, TAU / K_S, worst))
+
+P, MU, D_RIGHT, L = 1e8, 0.6, 40.0, 10e3
+G0 = E / 2  # nu = 0
+TAU_F = MU * P
+
+
+def read_summary(out):
+    import json
+    with open(os.path.join(out, "fault_summary.json")) as f:
+        return json.load(f)
+
+
+def read_fault(out):
+    with open(os.path.join(out, "fault.csv")) as f:
+        header = f.readline().strip()
+        rows = [line.strip().split(",") for line in f if line.strip()]
+    check(header == "s,x,y,slip,opening,shear_traction,normal_traction,state",
+          "fault.csv has the columns s,x,y,slip,opening,shear_traction,normal_traction,state")
+    return [dict(zip(header.split(","), [float(v) for v in r[:7]] + [r[7]])) for r in rows]
+
+
+def block_check(out, tau, slip, label):
+    """Points and fault.csv against the uniform-stress solution with the
+    hanging wall moved up by @p slip."""
+    rows = read_csv(os.path.join(out, "point_values.csv"))
+    worst = 0.0
+    # Displacements relative to the largest one (the solver's tolerance is
+    # relative to the load).
+    scale = max(max(abs(r["u_x"]), abs(r["u_y"])) for r in rows)
+    for r in rows:
+        hanging = r["x"] > 5e3
+        u_x = -P * r["x"] / E - (P / 1e10 if hanging else 0.0)
+        u_y = tau * r["x"] / G0 + (slip if hanging else 0.0)
+        worst = max(worst, abs(r["u_x"] - u_x) / scale, abs(r["u_y"] - u_y) / scale,
+                    abs(r["sigma_xy"] - tau) / P, abs(r["sigma_xx"] + P) / P,
+                    abs(r["sigma_yy"]) / P)
+    fault = read_fault(out)
+    for f in fault:
+        worst = max(worst, abs(f["slip"] + slip) / scale, abs(f["shear_traction"] + tau) / P,
+                    abs(f["normal_traction"] + P) / P, abs(f["opening"] + P / 1e10) / scale)
+    return rows, fault, worst
+
+
+for ranks in (1, 2):
+    out = os.path.abspath("output_frictional_fault_%d" % ranks)
+    result = run("faults/frictional_fault.prm", out, ranks)
+    slip = D_RIGHT - TAU_F * L / G0
+    rows, fault, worst = block_check(out, TAU_F, slip, "sliding")
+    iterations = [int(m) for m in re.findall(r"Newton iteration (\d+):", result.stdout)]
+    summary = read_summary(out)
+    check(len(rows) == 6 and len(fault) == 24 and all(f["state"] == "sliding" for f in fault)
+          and worst < 1e-9,
+          "frictional fault sliding, %d rank(s): all %d points slide with shear traction "
+          "mu|sigma_n| = %.6e Pa (exact %.6e), slip %.9f m (d - tau_F L/G = %.9f m), "
+          "largest relative difference %.1e"
+          % (ranks, len(fault), -fault[0]["shear_traction"], TAU_F, -fault[0]["slip"], slip, worst))
+    check(summary["nonlinear_iterations"] <= 4 and summary["linear_solves"] == summary["nonlinear_iterations"],
+          "frictional fault sliding, %d rank(s): semi-smooth Newton converges in %d iterations "
+          "(elastic predictor, then the active set; at most 4)" % (ranks, summary["nonlinear_iterations"]))
+
+stuck = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "frictional_fault.prm")).read()
+stuck = stuck.replace("set Prescribed displacement parts = left, right",
+                      "set Prescribed displacement parts = left")
+stuck = stuck.replace("  subsection right\n    set y = 40\n  end\n", "")
+stuck = stuck.replace("set Shear traction = 6e7", "set Shear traction = 3e7")
+stuck = stuck.replace("      set Normal traction = -1e8\n",
+                      "      set Normal traction = -1e8\n      set Shear traction = -3e7\n")
+with open("frictional_fault_stuck.prm", "w") as f:
+    f.write(stuck)
+for ranks in (1, 2):
+    out = os.path.abspath("output_frictional_fault_stuck_%d" % ranks)
+    run(os.path.abspath("frictional_fault_stuck.prm"), out, ranks)
+    rows, fault, worst = block_check(out, 3e7, 3e7 / 1e7, "stuck")
+    summary = read_summary(out)
+    check(len(fault) == 24 and all(f["state"] == "stuck" for f in fault) and worst < 1e-9
+          and summary["nonlinear_iterations"] == 1,
+          "frictional fault stuck (tau = 30 MPa < mu P), %d rank(s): slip tau/k_s = %.9f m, "
+          "every point stuck, one solve, largest relative difference %.1e"
+          % (ranks, -fault[0]["slip"], worst))
+
+# The thesis iteration: stops when the excess shear is below 1 kPa.
+out = os.path.abspath("output_frictional_fault_thesis")
+run("faults/frictional_fault.prm", out, 1,
+    ["Faults/Sliding solver/Method=thesis", "Faults/Sliding solver/Excess shear tolerance=1e3",
+     "Faults/Sliding solver/Maximum iterations=1000"])
+fault = read_fault(out)
+summary = read_summary(out)
+slip = D_RIGHT - TAU_F * L / G0
+worst_tau = max(abs(-f["shear_traction"] - TAU_F) for f in fault)
+worst_slip = max(abs(-f["slip"] - slip) for f in fault)
+# An excess e is a slip deficit of about e (1/k_s + L/G) (the fault's spring
+# and the block in series), and the iteration removes the fraction 1 - r of
+# a deficit per solve, r = (L/G) / (1/k_s + L/G): the corrections still to
+# come add up to at most e (1/k_s + L/G) / (1 - r).
+compliance = 1 / 1e7 + L / G0
+r = (L / G0) / compliance
+bound = 1e3 * compliance / (1 - r)
+check(all(f["state"] == "sliding" for f in fault) and worst_tau <= 1e3 and worst_slip <= bound,
+      "thesis iteration (factor 1): %d solves, all points sliding, shear traction within %.0f Pa "
+      "of mu|sigma_n| (tolerance 1 kPa), slip within %.1e m (bound %.1e m from the 1 kPa "
+      "tolerance and the contraction %.2f per solve)"
+      % (summary["linear_solves"], worst_tau, worst_slip, bound, r))
 
 out = os.path.abspath("output_locked_fault_q1")
 run(PRM, out, 1, ["Discretization/Polynomial degree=1", "Loads/Gravity/Enabled=false"])

@@ -79,15 +79,17 @@ namespace lithostress
      * Solve @p problem (its matrix and right-hand side without the
      * frictional fault) with the fault of @p faults, from the slip of
      * @p history, which is committed on convergence. @p solution gets the
-     * owned solution with its constraints distributed. @p progress gets a
-     * line per iteration. Throws ComputationError if the iteration does not
-     * converge, with @p solution holding the last iterate.
+     * owned solution with its constraints distributed, @p report the
+     * iterations and solves. @p progress gets a line per iteration. Throws
+     * ComputationError if the iteration does not converge, with
+     * @p solution, @p history and @p report holding the last iterate.
      */
-    SolverReport
-    solve(const DiscreteProblem<dim>                &problem,
-          const FaultInterface<dim>                 &faults,
-          FaultSlipHistory                          &history,
-          TrilinosWrappers::MPI::Vector             &solution,
+    void
+    solve(const DiscreteProblem<dim>             &problem,
+          const FaultInterface<dim>              &faults,
+          FaultSlipHistory                       &history,
+          TrilinosWrappers::MPI::Vector          &solution,
+          SolverReport                           &report,
           const std::function<void(std::string)> &progress) const;
 
   private:
