@@ -480,12 +480,17 @@ namespace lithostress
           }
         catch (const ComputationError &)
           {
-            // The last iterate, for the user to look at.
-            solution.reinit(system.locally_owned,
-                            system.locally_relevant,
-                            communicator);
-            solution = owned_solution;
-            write_fault_results();
+            // The last iterate, for the user to look at, if it is one (a
+            // diverged iteration has none).
+            if (owned_solution.size() == dof_handler.n_dofs() &&
+                std::isfinite(owned_solution.l2_norm()))
+              {
+                solution.reinit(system.locally_owned,
+                                system.locally_relevant,
+                                communicator);
+                solution = owned_solution;
+                write_fault_results();
+              }
             throw;
           }
       }

@@ -259,10 +259,12 @@ namespace lithostress
             }
           else
             {
+              // Right preconditioning: GMRES then measures the true
+              // residual, which the tolerance refers to.
               SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
                 control,
                 typename SolverGMRES<
-                  TrilinosWrappers::MPI::Vector>::AdditionalData(100));
+                  TrilinosWrappers::MPI::Vector>::AdditionalData(100, true));
               stop_on_signal(gmres, communicator);
               gmres.solve(matrix, x, rhs, amg);
             }
@@ -323,6 +325,11 @@ namespace lithostress
               }
             u      = trial;
             r_norm = trial_norm;
+            if (!std::isfinite(r_norm))
+              throw ComputationError(
+                "the Newton iteration for the sliding on fault <" +
+                faults.trace().name + "> produced a residual that is not "
+                "finite in iteration " + std::to_string(iteration));
             std::ostringstream line;
             line << "  sliding: Newton iteration " << iteration
                  << ": residual " << std::setprecision(3) << r_norm / f
@@ -342,6 +349,7 @@ namespace lithostress
         // The fault stays elastic in the matrix; its excess shear moves
         // into the slip.
         set_up(stuck_law(thesis_slip));
+        double first_excess = 0;
         for (iteration = 1; iteration <= parameters.max_iterations;
              ++iteration)
           {
@@ -394,6 +402,24 @@ namespace lithostress
               nullptr,
               nullptr);
             excess = Utilities::MPI::max(ex, communicator);
+            if (iteration == 1)
+              first_excess = excess;
+            // Growing by orders of magnitude, or overflowing: the factor is
+            // too large for this stiffness (thesis §6.1.5).
+            if (!std::isfinite(excess) || excess > 1e3 * first_excess)
+              {
+                std::ostringstream what;
+                what << std::setprecision(3)
+                     << "the thesis iteration for the sliding on fault <"
+                     << faults.trace().name << "> diverges: the excess shear "
+                     << "grew from " << first_excess << " Pa to " << excess
+                     << " Pa in " << iteration
+                     << " iterations; lower Faults/Sliding solver/Convergence "
+                        "factor (now "
+                     << parameters.convergence_factor << ")";
+                report.nonlinear_iterations = iteration;
+                throw ComputationError(what.str());
+              }
             std::ostringstream line;
             line << "  sliding: thesis iteration " << iteration
                  << ": excess shear " << std::setprecision(3) << excess
