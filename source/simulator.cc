@@ -477,6 +477,8 @@ namespace lithostress
               owned_solution,
               statistics.solver,
               [&](const std::string &line) { log << line << std::endl; });
+            if (!defer_slip_commit)
+              slip_history.commit();
           }
         catch (const ComputationError &)
           {
@@ -594,7 +596,7 @@ namespace lithostress
 
   template <int dim>
   void
-  Simulator<dim>::write_fault_results()
+  Simulator<dim>::write_fault_results(const int output_index)
   {
     const std::vector<FaultSample> samples =
       sample_fault(faults, dof_handler, *fe_space, solution, slip_history);
@@ -629,6 +631,11 @@ namespace lithostress
       if (Utilities::MPI::this_mpi_process(communicator) == 0)
         {
           write_fault_csv(output_directory + "/fault.csv", samples);
+          if (output_index >= 0)
+            write_fault_csv(output_directory + "/fault-" +
+                              Utilities::int_to_string(output_index, 5) +
+                              ".csv",
+                            samples);
           write_fault_summary(output_directory + "/fault_summary.json",
                               summary);
         }

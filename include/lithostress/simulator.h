@@ -111,9 +111,10 @@ namespace lithostress
     void
     postprocess(const unsigned int cycle);
     /** fault.csv and fault_summary.json of a model with an elastic or
-     * frictional fault (FaultOutput). */
+     * frictional fault (faults/fault_output.h); in the time loop also
+     * fault-NNNNN.csv of output step @p output_index. */
     void
-    write_fault_results();
+    write_fault_results(const int output_index = -1);
     void
     check_output_directory() const;
     /**
@@ -179,6 +180,9 @@ namespace lithostress
     FrictionalSlidingSolver<dim>              sliding_solver;
     /** The frictional fault's accumulated slip (its history). */
     FaultSlipHistory slip_history;
+    /** Whether solve() leaves the slip of a frictional fault uncommitted
+     * (the time loop commits it with an accepted step). */
+    bool defer_slip_commit = false;
     std::unique_ptr<StressModel<dim>>         stress_model;
     std::unique_ptr<FiniteElementSpace<dim>>  fe_space;
     DoFHandler<dim>                           dof_handler;

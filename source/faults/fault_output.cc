@@ -42,7 +42,8 @@ namespace lithostress
         sample.vertical_jump = w[1];
         const double w_s = w * p.shear, w_n = w * p.normal;
         const double slip_p =
-          frictional && i < history.slip.size() ? history.slip[i] : 0;
+          frictional && i < history.trial_slip.size() ? history.trial_slip[i] :
+                                                        0;
         const double t_s = law.shear_stiffness * (w_s - slip_p);
         sample.shear_traction =
           t_s * (p.shear[0] * down[0] + p.shear[1] * down[1]);
@@ -53,8 +54,9 @@ namespace lithostress
             sample.friction_limit =
               law.friction_coefficient *
               std::max(0.0, -sample.normal_traction);
-            sample.state = i < history.states.size() ? history.states[i] :
-                                                       SlipState::stuck;
+            sample.state = i < history.trial_states.size() ?
+                             history.trial_states[i] :
+                             SlipState::stuck;
             if (sample.state == SlipState::open)
               sample.shear_traction = 0;
           }

@@ -133,9 +133,12 @@ namespace lithostress
     report.linear_solves = 0;
     Timer timer(communicator, true);
 
-    const unsigned int n_points =
-      faults.interface_quadrature(dof_handler, fe_space).size();
-    history.reinit(n_points, problem.operator_version >> 32);
+    std::vector<double> distances;
+    for (const InterfacePoint &p :
+         faults.interface_quadrature(dof_handler, fe_space))
+      distances.push_back(p.distance);
+    const unsigned int n_points = distances.size();
+    history.reinit(distances, problem.operator_version >> 32, communicator);
     // The law each solve linearised (t = D w + c per point) and the return
     // mapping's response at the last evaluated iterate.
     std::vector<Tensor<2, dim>>            tangents(n_points);
@@ -438,12 +441,12 @@ namespace lithostress
         r_norm                                              = residual_norm(u);
         responses                                           = thesis;
       }
-    // Commit (or, if not converged, show) the last iterate's slip and
-    // states.
+    // The last iterate's slip and states: the trial history, committed by
+    // the caller (or, if not converged, shown).
     for (unsigned int i = 0; i < n_points; ++i)
       {
-        history.slip[i]   = responses[i].plastic_slip;
-        history.states[i] = responses[i].state;
+        history.trial_slip[i]   = responses[i].plastic_slip;
+        history.trial_states[i] = responses[i].state;
       }
     report.nonlinear_iterations = std::min(iteration, parameters.max_iterations);
     report.final_residual       = r_norm / f;

@@ -42,7 +42,7 @@ namespace lithostress
     sim.assemble_system();
     sim.stop_if_requested("solve");
     sim.solve();
-    ++linear_solves;
+    linear_solves += sim.statistics.solver.linear_solves;
     return sim.statistics.solver.iterations;
   }
 
@@ -70,6 +70,8 @@ namespace lithostress
     }
     sim.time           = t_new;
     sim.history_strain = &creep.history_strain();
+    // A frictional fault's slip of this step counts only if it is accepted.
+    sim.defer_slip_commit = true;
     typename CreepIntegrator<dim>::Increment increment;
     if (!thesis)
       {
@@ -119,6 +121,7 @@ namespace lithostress
         increment = creep.finish_thesis_step(model);
       }
     sim.history_strain     = nullptr;
+    sim.defer_slip_commit  = false;
     record.creep_increment = increment.creep_change;
     // Relative to the largest elastic strain of the run: errors of a
     // relaxing stress are measured against its initial size, so that the
@@ -135,6 +138,7 @@ namespace lithostress
       }
     strain_scale = scale;
     creep.accept_step();
+    sim.slip_history.commit();
     return true;
   }
 
@@ -168,6 +172,8 @@ namespace lithostress
                               *sim.stress_model,
                               sim.griffith,
                               sim.solution);
+    if (sim.faults.has_face_terms())
+      sim.write_fault_results(index);
     if (sim.points.empty())
       return;
     const auto values = evaluate_at_points(sim.dof_handler,
@@ -310,6 +316,8 @@ namespace lithostress
       displacement(sim.dof_handler);
     displacement.prepare_for_serialization(sim.solution);
     sim.triangulation.save(directory + "/mesh");
+    const std::vector<FaultSlipHistory::Record> fault_slip =
+      sim.slip_history.gather(comm);
 
     on_all_ranks(comm, [&]() {
       if (!root)
@@ -334,6 +342,9 @@ namespace lithostress
       state << "history " << point_history.size() << '\n';
       for (const std::string &row : point_history)
         state << row << '\n';
+      state << "fault_slip " << fault_slip.size() << '\n';
+      for (const auto &r : fault_slip)
+        state << exact(r[0]) << ' ' << exact(r[1]) << ' ' << r[2] << '\n';
       write_file_atomically(directory + "/state.txt", state.str(), false);
       write_file_atomically(directory + "/model.prm",
                             Checkpoint::model_text(sim.prm),
@@ -414,11 +425,32 @@ namespace lithostress
     point_history.resize(n);
     for (std::string &row : point_history)
       std::getline(in, row);
+    // A frictional fault's slip along it (absent in older checkpoints).
+    std::vector<FaultSlipHistory::Record> fault_slip;
+    if (in >> word)
+      {
+        if (word != "fault_slip")
+          throw ComputationError("the checkpoint " + directory +
+                                 "/state.txt is damaged (expected "
+                                 "<fault_slip>, found <" +
+                                 word + ">)");
+        in >> n;
+        fault_slip.resize(n);
+        for (auto &r : fault_slip)
+          {
+            r[0] = number();
+            r[1] = number();
+            in >> r[2];
+          }
+      }
+    else
+      in.clear();
     if (!in)
       throw ComputationError("the checkpoint " + directory +
                              "/state.txt is damaged (truncated)");
 
     // The mesh and the fields, in the order they were attached.
+    sim.slip_history.restore(fault_slip);
     sim.triangulation.load(directory + "/mesh");
     sim.time = t;
     model.set_time_step(0, settings.theta);

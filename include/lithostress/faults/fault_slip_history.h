@@ -1,42 +1,79 @@
 #ifndef lithostress_faults_fault_slip_history_h
 #define lithostress_faults_fault_slip_history_h
 
+#include <deal.II/base/mpi.h>
+
 #include <lithostress/faults/coulomb_friction.h>
 
+#include <array>
 #include <vector>
 
 namespace lithostress
 {
+  using namespace dealii;
+
   /**
    * The history of a frictional fault: at each interface point of this
    * rank (in the order of FaultInterface::interface_quadrature()), the
    * accumulated slip p of the interface law (CoulombFriction) and the
-   * state the last converged solve left it in. It is committed only when a
-   * solve of the sliding problem has converged, so that a load step or time
-   * step starts from the last equilibrium.
+   * state. The sliding solver writes the trial values of a solve; commit()
+   * makes them the history — after each solve of an elastic run, only on an
+   * accepted step in the visco-elastic loop, so that a rejected step starts
+   * again from the last equilibrium.
+   *
+   * On a new mesh (refinement, coarsening, a checkpoint read on any number
+   * of ranks) the slip is carried along the fault: interpolated linearly in
+   * the distance s from its surface trace between the previous mesh's
+   * points (of all ranks), the state taken from the nearest of them. This
+   * keeps the slip profile to the interpolation error of the old points
+   * (O(h²) where it is smooth) but not its integral exactly (the seismic
+   * moment) where coarsening merges points.
    */
   class FaultSlipHistory
   {
   public:
-    /** Size for @p n_points points of a new mesh, all stuck with zero slip,
-     * unless the history already belongs to mesh @p mesh_version. */
+    /** (s, p, state) of one point, for transfer and checkpoints. */
+    using Record = std::array<double, 3>;
+
+    /**
+     * Fit the history to the interface points at distances @p distances
+     * (this rank's) of mesh @p mesh_version: kept if it belongs to that
+     * mesh, else carried over from the previous points or a restored
+     * profile (zero slip, stuck, if there is none). Collective.
+     */
     void
-    reinit(const unsigned int n_points, const unsigned long long mesh_version)
+    reinit(const std::vector<double> &distances,
+           const unsigned long long   mesh_version,
+           const MPI_Comm             communicator);
+
+    /** Make the trial slip and states the history. */
+    void
+    commit()
     {
-      if (mesh == mesh_version && slip.size() == n_points)
-        return;
-      mesh = mesh_version;
-      slip.assign(n_points, 0.0);
-      states.assign(n_points, SlipState::stuck);
+      slip   = trial_slip;
+      states = trial_states;
     }
 
-    /** The accumulated slip p at each point [m]. */
-    std::vector<double> slip;
-    /** The state at each point after the last converged solve. */
+    /** All ranks' committed (s, p, state), sorted by s. Collective. */
+    std::vector<Record>
+    gather(const MPI_Comm communicator) const;
+
+    /** Continue from @p records (a checkpoint's): applied by the next
+     * reinit(). */
+    void
+    restore(const std::vector<Record> &records);
+
+    /** The committed slip p and state at each point [m]. */
+    std::vector<double>    slip;
     std::vector<SlipState> states;
+    /** The last solve's values (committed by commit()). */
+    std::vector<double>    trial_slip;
+    std::vector<SlipState> trial_states;
 
   private:
-    unsigned long long mesh = ~0ULL;
+    std::vector<double> distances;
+    unsigned long long  mesh = ~0ULL;
+    std::vector<Record> restored;
   };
 } // namespace lithostress
 

@@ -77,8 +77,9 @@ namespace lithostress
 
     /**
      * Solve @p problem (its matrix and right-hand side without the
-     * frictional fault) with the fault of @p faults, from the slip of
-     * @p history, which is committed on convergence. @p solution gets the
+     * frictional fault) with the fault of @p faults, from the committed slip
+     * of @p history; its trial slip and states get the result (the caller
+     * commits them). @p solution gets the
      * owned solution with its constraints distributed, @p report the
      * iterations and solves. @p progress gets a line per iteration. Throws
      * ComputationError if the iteration does not converge, with
