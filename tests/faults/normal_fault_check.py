@@ -17,6 +17,9 @@ semi-smooth Newton method on coarse meshes (Debug build).
   fault's flexure: at most throw sqrt(2) exp(-500 km / alpha), alpha the
   flexural parameter of the plate on its fluid base.
 * The same answer on 1 and 2 ranks (throw and slip to 1e-8).
+* A Newton iteration stopped before convergence ends with a clear message
+  naming the entry to change, a non-zero exit, and the last iterate in
+  fault.csv.
 """
 import json
 import math
@@ -109,4 +112,17 @@ sliding = [p for p in fault_t if p["state"] == "sliding"]
 check(st["throw_m"] < 0 and sliding and all(p["slip"] < 0 for p in sliding),
       "thrust fault, 50 MPa compression: reverse sense: throw %.1f m (hanging wall up), all %d "
       "sliding points slip up dip" % (st["throw_m"], len(sliding)))
+# Not converged: the last iterate is written out.
+out = os.path.abspath("output_normal_fault_not_converged")
+result = run(NORMAL, out, 1, QUIET + ["Mesh refinement/Initial global refinement=1",
+                                      "Faults/Sliding solver/Maximum iterations=2"],
+             expect_success=False)
+text = result.stdout + result.stderr
+with open(os.path.join(out, "fault.csv")) as f:
+    rows = f.read().splitlines()
+check(result.returncode != 0 and "did not converge in 2 newton iterations" in text
+      and "Faults/Sliding solver/Maximum iterations" in text and "Stacktrace" not in text
+      and len(rows) > 1,
+      "normal fault with at most 2 Newton iterations: exit %d, one clear line, the last iterate "
+      "in fault.csv (%d points)" % (result.returncode, len(rows) - 1))
 finish()

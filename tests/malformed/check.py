@@ -69,6 +69,9 @@ expected = {
     "resume_other_model": "checkpoint-000007 belongs to another model",
     "fault_not_named": "Faults/Names>: the geometry has the fault <fault>: name it here",
     "fault_outside_box": "Geometry/Layered box/Fault surface x>: the fault must cross the box from the top to the base",
+    "friction_negative": "Faults/fault/Friction coefficient>: must be at least 0, got -0.1",
+    "fault_stiffness_zero": "Faults/fault/Shear stiffness>: must be greater than 0, got 0",
+    "fault_stiffness_missing": "Faults/fault/Normal stiffness>: is needed by the elastic law",
     "rigid_edge_pinned_corner": "Boundary conditions/right/x>: is `rigid`, but another part already prescribes",
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",
