@@ -21,6 +21,9 @@ Every input is optional: a figure is made when its data exist, and one line
                                      sigma_xy,sigma_1,sigma_2,
                                      sigma_zz,deviatoric_xx,
                                      griffith_C
+  fault.csv                          s,x,y,slip,opening,            fault.png (and the fault
+                                     shear_traction,                trace on
+                                     normal_traction,state          principal_stresses.png)
 
 figures.json, e.g. {"length_unit": "km", "length_scale": 1000.0,
 "title": "plate flexure", "stress_unit_scale": 1e6}: length_scale is metres
@@ -41,6 +44,10 @@ cut to 1.3 x that and marked by black ticks across their ends (in the key:
 than 8 times as wide as high gets an overview panel plus a panel of a window
 8 heights wide around the largest stresses. Points closer than about 0.3 inch
 on the page are thinned to one per grid cell (the figure says so).
+fault.png: slip along the fault (s from its surface trace, points marked by
+state: stuck, sliding, open) and, for a frictional fault, |tau|/tau_F with
+tau_F = mu max(0, -sigma_n,eff) (mu = Faults/<name>/Friction coefficient of
+parameters.prm): 1 where it slides; else the shear and normal tractions.
 stress_depth_*.png: a few singular values (e.g. under a point load) that
 would squash a panel are put off scale and named. surface_profile.png:
 thin_plate_comparison.csv as written by the simulator (forebulge table) gives
@@ -395,6 +402,7 @@ def plot_principal_stresses(directory, settings):
         outline = seg[np.isfinite(seg).all(axis=(1, 2))]
         if not len(outline):
             outline = None
+    trace = fault_trace(directory, settings)
 
     if outline is not None:
         pts = outline.reshape(-1, 2)
@@ -487,6 +495,8 @@ def plot_principal_stresses(directory, settings):
         ax = fig.add_axes([x_left / fig_w, ypos / fig_h, panel_w / fig_w, h / fig_h])
         ypos -= gap
         draw_outline(ax, outline, outline_width)
+        if trace is not None:
+            ax.plot(trace[0], trace[1], color="black", linewidth=1.8, zorder=4)
         inside = (x >= xl[0] - drawn) & (x <= xl[1] + drawn)
         widths = bar_widths(longest * panel_w / (xl[1] - xl[0]) * 72)
         if k > 0 and inside.any():
@@ -575,6 +585,102 @@ def plot_principal_stresses(directory, settings):
 
 # --------------------------------------------------------------------------
 # Surface profile
+
+
+def read_fault(directory):
+    """fault.csv as (columns as arrays, states), or None if there is none."""
+    path = os.path.join(directory, "fault.csv")
+    if not os.path.exists(path):
+        return None
+    names = ("s", "x", "y", "slip", "opening", "shear_traction", "normal_traction")
+    columns = {n: [] for n in names}
+    states = []
+    try:
+        with open(path, newline="") as f:
+            reader = csv.DictReader(f)
+            missing = [n for n in names + ("state",) if n not in (reader.fieldnames or [])]
+            if missing:
+                raise InputError(path, "missing column(s) %s" % ", ".join(missing))
+            for row in reader:
+                try:
+                    for n in names:
+                        columns[n].append(float(row[n]))
+                except (TypeError, ValueError):
+                    raise InputError(path, "line %d: a value is not a number" % reader.line_num)
+                if row["state"] not in ("stuck", "sliding", "open"):
+                    raise InputError(path, "line %d: state %r is not stuck, sliding or open"
+                                     % (reader.line_num, row["state"]))
+                states.append(row["state"])
+    except OSError as e:
+        raise InputError(path, e.strerror or str(e))
+    return {n: np.array(v) for n, v in columns.items()}, np.array(states)
+
+
+def fault_trace(directory, settings):
+    """The fault's interface points (x, y) in plotting units, or None."""
+    fault = read_fault(directory)
+    if fault is None or len(fault[1]) == 0:
+        return None
+    scale = settings["length_scale"]
+    return fault[0]["x"] / scale, fault[0]["y"] / scale
+
+
+def plot_fault(directory, settings):
+    """fault.png: slip and the shear against the friction limit along the
+    fault."""
+    fault = read_fault(directory)
+    if fault is None or len(fault[1]) == 0:
+        return None
+    values, states = fault
+    prm = read_prm(os.path.join(directory, "parameters.prm"))
+    names = [n.strip() for n in prm.get("Faults/Names", "").split(",") if n.strip()]
+    law = prm.get("Faults/%s/Interface law" % names[0], "") if names else ""
+    mu = float(prm.get("Faults/%s/Friction coefficient" % names[0], "nan")) if names else math.nan
+    unit, scale = settings["length_unit"], settings["length_scale"]
+    sscale, sunit = settings["stress_scale"], settings["stress_unit"]
+    s = values["s"] / scale
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.5, 6.5), sharex=True)
+    top.plot(s, values["slip"], color="0.4", linewidth=1)
+    styles = {"stuck": ("o", "tab:blue"), "sliding": ("s", "tab:red"), "open": ("^", "tab:orange")}
+    for state, (marker, color) in styles.items():
+        chosen = states == state
+        if chosen.any():
+            top.plot(s[chosen], values["slip"][chosen], marker, color=color, markersize=3.5,
+                     linestyle="none", label=state)
+    top.axhline(0, color="0.7", linewidth=0.6)
+    top.set_ylabel("slip [m] (+ normal, - reverse)")
+    top.legend(fontsize=8, loc="best")
+    top.set_title(titled(settings, "fault: slip and shear along the fault"), fontsize=10)
+    if law == "frictional" and math.isfinite(mu):
+        limit = mu * np.maximum(0.0, -values["normal_traction"])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.where(limit > 0, np.abs(values["shear_traction"]) / limit, np.nan)
+        bottom.plot(s, ratio, color="0.4", linewidth=1)
+        for state, (marker, color) in styles.items():
+            chosen = (states == state) & np.isfinite(ratio)
+            if chosen.any():
+                bottom.plot(s[chosen], ratio[chosen], marker, color=color, markersize=3.5,
+                            linestyle="none")
+        bottom.axhline(1, color="black", linewidth=0.8, linestyle="--")
+        bottom.set_ylabel("|tau| / tau_F  (tau_F = %g |sigma_n,eff|)" % mu)
+        bottom.set_ylim(0, max(1.2, np.nanmax(ratio) * 1.05 if np.isfinite(ratio).any() else 1.2))
+        opened = states == "open"
+        if opened.any():
+            bottom.text(0.01, 0.03, "open (no friction) down to s = %.3g %s"
+                        % (s[opened].max(), unit), transform=bottom.transAxes, fontsize=8)
+    else:
+        bottom.plot(s, values["shear_traction"] / sscale, label="shear traction")
+        bottom.plot(s, values["normal_traction"] / sscale, label="normal traction")
+        bottom.set_ylabel("traction [%s] (tension +)" % sunit)
+        bottom.legend(fontsize=8)
+    bottom.set_xlabel("s, distance along the fault from its surface trace [%s]" % unit)
+    for ax in (top, bottom):
+        ax.tick_params(labelsize=8)
+    fig.tight_layout()
+    out = os.path.join(directory, "fault.png")
+    save_complete(fig, out)
+    plt.close(fig)
+    return out
 
 
 def thin_plate_curve(directory, x_profile, uy_profile):
@@ -886,7 +992,8 @@ def main():
 
     jobs = [("principal stresses", lambda: plot_principal_stresses(directory, settings)),
             ("surface profile", lambda: plot_surface_profile(directory, settings)),
-            ("point history", lambda: plot_point_history(directory, settings))]
+            ("point history", lambda: plot_point_history(directory, settings)),
+            ("fault", lambda: plot_fault(directory, settings))]
     for path in sorted(glob.glob(os.path.join(glob.escape(directory), "stress_depth_*.csv"))):
         jobs.append((os.path.basename(path), lambda p=path: plot_stress_depth(p, settings)))
     status = 0

@@ -781,6 +781,9 @@ namespace lithostress
   Simulator<dim>::compute_cycle()
   {
     stop_if_requested("set-up");
+    // An elastic cycle solves the load from the undeformed state: the
+    // fault's slip starts from zero on every mesh.
+    slip_history = FaultSlipHistory();
     setup_dofs();
     stop_if_requested("assembly");
     assemble_system();
@@ -922,6 +925,9 @@ namespace lithostress
           << ", \"huge_pages\": "
           << (huge_pages_for_large_arrays() ? "true" : "false")
           << ", \"iterations\": " << statistics.solver.iterations
+          << ", \"nonlinear_iterations\": "
+          << statistics.solver.nonlinear_iterations
+          << ", \"linear_solves\": " << statistics.solver.linear_solves
           << ", \"setup_s\": " << statistics.mesh_time + statistics.setup_time
           << ", \"assemble_s\": " << statistics.assemble_time
           << ", \"solve_s\": " << statistics.solve_time

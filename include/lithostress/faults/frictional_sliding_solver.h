@@ -34,10 +34,11 @@ namespace lithostress
    * and the return mapping's — is below its tolerance: then the states no
    * longer change and the solution satisfies the law exactly. The tangent
    * is not symmetric while a point slides (the friction limit depends on
-   * the normal jump): GMRES with the elasticity AMG solves it.
+   * the normal jump): GMRES with the elasticity AMG (ILU smoothing, for the
+   * stiff normal spring) solves it.
    *
    * `thesis`: the iteration of the thesis (§5.5, FSHEAR): the fault stays
-   * elastic in the matrix (CG with AMG set up once), and the shear beyond
+   * elastic in the matrix (the AMG set up once), and the shear beyond
    * the friction limit is removed by equal and opposite forces on the two
    * sides, times the convergence factor, accumulated in the slip p, re-solved
    * until the excess shear is below its tolerance. Kept for comparison.
