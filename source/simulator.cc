@@ -411,7 +411,10 @@ namespace lithostress
                                     *fe_space,
                                     system.constraints,
                                     time);
-      faults.add_constraints(dof_handler, *fe_space, system.constraints);
+      faults.add_constraints(dof_handler,
+                             *fe_space,
+                             system.constraints,
+                             time);
     });
     system.constraints.close();
   }

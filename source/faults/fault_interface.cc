@@ -30,7 +30,8 @@ namespace lithostress
         prm.enter_subsection(name);
         prm.declare_entry("Interface law",
                           "locked",
-                          Patterns::Selection("locked|elastic|frictional"),
+                          Patterns::Selection(
+                            "locked|elastic|frictional|prescribed slip"),
                           "locked = the displacement is continuous across "
                           "the fault (exact constraints, thesis §5's "
                           "k = 1e15 N/m without its penalty); elastic = the "
@@ -39,7 +40,23 @@ namespace lithostress
                           "stiffness) in the fault's (shear, normal) frame; "
                           "frictional = elastic until the shear traction "
                           "reaches mu |sigma_n,eff|, then Coulomb sliding "
-                          "(thesis §5.5; solved by the Sliding solver).");
+                          "(thesis §5.5; solved by the Sliding solver); "
+                          "prescribed slip = the jump is Slip along the dip "
+                          "plus Opening along the normal (kinematic, exact "
+                          "constraints).");
+        prm.declare_entry("Slip",
+                          "0",
+                          Patterns::Anything(),
+                          "Prescribed slip: the slip [m] down the dip "
+                          "(positive = normal sense, hanging wall down) as a "
+                          "function of s, the distance along the fault from "
+                          "its surface trace [m], and t [s].");
+        prm.declare_entry("Opening",
+                          "0",
+                          Patterns::Anything(),
+                          "Prescribed slip: the opening [m] along the normal "
+                          "(into the hanging wall) as a function of s [m] and "
+                          "t [s].");
         prm.declare_entry("Shear stiffness",
                           "",
                           Patterns::Anything(),
@@ -118,9 +135,32 @@ namespace lithostress
         Fault fault;
         fault.trace = trace;
         const std::string law = prm.get("Interface law");
-        fault.law = law == "elastic"      ? Law::elastic :
-                    law == "frictional" ? Law::frictional :
-                                          Law::locked;
+        fault.law = law == "elastic"         ? Law::elastic :
+                    law == "frictional"      ? Law::frictional :
+                    law == "prescribed slip" ? Law::prescribed_slip :
+                                               Law::locked;
+        if (fault.law == Law::prescribed_slip)
+          {
+            const auto function = [&](const std::string &name) {
+              auto f = std::make_shared<FunctionParser<1>>(1, 0.0);
+              try
+                {
+                  f->initialize("s,t",
+                                prm.get(name),
+                                std::map<std::string, double>(),
+                                true);
+                }
+              catch (const std::exception &e)
+                {
+                  throw_input_error("Faults/" + trace.name + "/" + name,
+                                    "<" + prm.get(name) +
+                                      "> is not an expression of s and t");
+                }
+              return f;
+            };
+            fault.slip    = function("Slip");
+            fault.opening = function("Opening");
+          }
         const auto entry = [&](const std::string &name) {
           return "Faults/" + trace.name + "/" + name;
         };
@@ -139,7 +179,7 @@ namespace lithostress
                                 ", got " + text);
           return value;
         };
-        if (fault.law != Law::locked)
+        if (fault.law == Law::elastic || fault.law == Law::frictional)
           {
             CoulombFriction &f = fault.friction;
             f.shear_stiffness  = number("Shear stiffness", 0, false);
@@ -176,7 +216,7 @@ namespace lithostress
   FaultInterface<dim>::has_face_terms() const
   {
     for (const Fault &fault : faults)
-      if (fault.law != Law::locked)
+      if (fault.law == Law::elastic || fault.law == Law::frictional)
         return true;
     return false;
   }
@@ -541,10 +581,50 @@ namespace lithostress
   FaultInterface<dim>::add_constraints(
     const DoFHandler<dim>         &dof_handler,
     const FiniteElementSpace<dim> &fe_space,
-    AffineConstraints<double>     &constraints) const
+    AffineConstraints<double>     &constraints,
+    const double                   time) const
   {
-    if (faults.empty() || faults.front().law != Law::locked)
+    if (faults.empty() || (faults.front().law != Law::locked &&
+                           faults.front().law != Law::prescribed_slip))
       return;
+    const Fault &fault = faults.front();
+    // The prescribed jump's component d at a node of a fault face (zero
+    // for a locked fault).
+    const Tensor<1, 2> down = fault.trace.down_dip();
+    const auto         jump = [&](const Point<dim>  &x,
+                          const Tensor<1, dim> &normal,
+                          const unsigned int    d) {
+      if (fault.law != Law::prescribed_slip)
+        return 0.0;
+      const Point<1> s(fault.trace.distance_along(x));
+      fault.slip->set_time(time);
+      fault.opening->set_time(time);
+      return fault.slip->value(s) * down[d] +
+             fault.opening->value(s) * normal[d];
+    };
+    // The nodes of a face in the order of the scalar element's face DoFs:
+    // the vertices, then (Q2) the midpoint on the face's manifold; and the
+    // face's normal out of the footwall.
+    const auto node_positions = [&](const auto &face) {
+      std::vector<Point<dim>> x;
+      for (const unsigned int v : face->vertex_indices())
+        x.push_back(face->vertex(v));
+      if (fe_space.degree() == 2)
+        x.push_back(face->center(true));
+      return x;
+    };
+    const auto footwall_normal = [&](const Point<dim> &a,
+                                     const Point<dim> &b) {
+      Tensor<1, dim> t = b - a, n;
+      n[0] = t[1];
+      n[1] = -t[0];
+      n /= n.norm();
+      // Into the hanging wall.
+      const Point<dim> mid = a + 0.5 * (b - a);
+      if (!fault.trace.in_hanging_wall(mid + 1e-6 * (b - a).norm() * n))
+        n = -n;
+      return n;
+    };
     const auto        &collection = fe_space.fe_collection();
     const FE_Q<dim>    scalar(fe_space.degree());
     const unsigned int n_nodes = scalar.n_dofs_per_face();
@@ -565,12 +645,15 @@ namespace lithostress
     auto constrain =
       [&](const types::global_dof_index target,
           const std::vector<std::pair<types::global_dof_index, double>>
-            &entries) {
+                      &entries,
+          const double inhomogeneity) {
         if (!constraints.can_store_line(target) ||
             constraints.is_constrained(target))
           return;
         constraints.add_line(target);
         constraints.add_entries(target, entries);
+        if (inhomogeneity != 0)
+          constraints.set_inhomogeneity(target, inhomogeneity);
       };
 
     std::vector<types::global_dof_index> dofs_0(
@@ -597,10 +680,13 @@ namespace lithostress
                   continue;
                 cell->face(f)->get_dof_indices(dofs_0, 0);
                 cell->face(f)->get_dof_indices(dofs_1, 1);
+                const auto x = node_positions(cell->face(f));
+                const auto n = footwall_normal(x[0], x[1]);
                 for (unsigned int d = 0; d < dim; ++d)
                   for (unsigned int k = 0; k < n_nodes; ++k)
                     constrain(dofs_1[table[1][d][k]],
-                              {{dofs_0[table[0][d][k]], 1.0}});
+                              {{dofs_0[table[0][d][k]], 1.0}},
+                              jump(x[k], n, d));
                 continue;
               }
             // This cell is the finer side of a hanging fault face.
@@ -608,6 +694,8 @@ namespace lithostress
               cell->neighbor_of_coarser_neighbor(f);
             const auto coarse_face      = neighbor->face(coarse_face_no);
             const FullMatrix<double> &m = subface[subface_no];
+            const auto                x = node_positions(cell->face(f));
+            const auto                n = footwall_normal(x[0], x[1]);
             if (side == 1)
               {
                 // Fine hanging wall: every node := the footwall's coarse
@@ -622,7 +710,9 @@ namespace lithostress
                       for (unsigned int i = 0; i < n_nodes; ++i)
                         if (std::abs(m(j, i)) > 1e-14)
                           entries.emplace_back(dofs_0[table[0][d][i]], m(j, i));
-                      constrain(dofs_1[table[1][d][j]], entries);
+                      constrain(dofs_1[table[1][d][j]],
+                                entries,
+                                jump(x[j], n, d));
                     }
               }
             else
@@ -638,7 +728,8 @@ namespace lithostress
                       unsigned int i = 0;
                       if (unit_row(m, j, i))
                         constrain(dofs_1[table[1][d][i]],
-                                  {{dofs_0[table[0][d][j]], 1.0}});
+                                  {{dofs_0[table[0][d][j]], 1.0}},
+                                  jump(x[j], n, d));
                       else
                         {
                           std::vector<
@@ -648,7 +739,9 @@ namespace lithostress
                             if (std::abs(m(j, c)) > 1e-14)
                               entries.emplace_back(dofs_1[table[1][d][c]],
                                                    m(j, c));
-                          constrain(dofs_0[table[0][d][j]], entries);
+                          constrain(dofs_0[table[0][d][j]],
+                                    entries,
+                                    -jump(x[j], n, d));
                         }
                     }
               }

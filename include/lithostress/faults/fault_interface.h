@@ -1,6 +1,7 @@
 #ifndef lithostress_faults_fault_interface_h
 #define lithostress_faults_fault_interface_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
@@ -13,6 +14,7 @@
 #include <lithostress/faults/fault_trace.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,6 +44,10 @@ namespace lithostress
    * that every constraint points from the hanging wall, or from inside a
    * fine footwall face, towards footwall nodes: no cycles, and the same
    * constraints on every rank.
+   * `prescribed slip`: the jump is given, w = slip(s, t) d + opening(s, t)
+   * n (kinematic, as PyLith's faults), exact through the locked
+   * constraints with inhomogeneities: the nodes of each side satisfy
+   * u⁺ = u⁻ + w at the node.
    * `frictional`: the elastic law with Coulomb sliding (CoulombFriction),
    * a nonlinear law solved by FrictionalSlidingSolver through
    * assemble_interface().
@@ -55,7 +61,8 @@ namespace lithostress
     {
       locked,
       elastic,
-      frictional
+      frictional,
+      prescribed_slip
     };
 
     /** A point of the interface quadrature (on the finer side's face). */
@@ -110,13 +117,15 @@ namespace lithostress
     void
     set_active_fe_indices(DoFHandler<dim> &dof_handler) const;
 
-    /** Add the interface constraints of locked faults to @p constraints
-     * (after the hanging-node and boundary constraints: a DoF that is
-     * already constrained keeps its constraint). */
+    /** Add the interface constraints of locked faults, and of faults with
+     * prescribed slip at time @p time [s], to @p constraints (after the
+     * hanging-node and boundary constraints: a DoF that is already
+     * constrained keeps its constraint). */
     void
     add_constraints(const DoFHandler<dim>         &dof_handler,
                     const FiniteElementSpace<dim> &fe_space,
-                    AffineConstraints<double>     &constraints) const;
+                    AffineConstraints<double>     &constraints,
+                    const double                   time = 0) const;
 
     /** Whether a fault adds face terms to the matrix (an elastic or
      * frictional law). */
@@ -202,6 +211,9 @@ namespace lithostress
       /** k_s, k_n per unit fault area [Pa/m] (elastic and frictional
        * laws), μ and the effective normal stress's terms (frictional). */
       CoulombFriction friction;
+      /** Prescribed slip: slip and opening [m] as functions of the
+       * distance s along the fault [m] and the time t [s]. */
+      std::shared_ptr<FunctionParser<1>> slip, opening;
     };
 
     /** Call @p pair(minus cell, face, plus cell, plus face, subface of the
