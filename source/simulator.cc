@@ -308,20 +308,20 @@ namespace lithostress
                                 const unsigned int refinements) {
       const double growth = std::pow(2.0, refinements);
       const double cells  = coarse_cells * std::pow(growth, dim);
-      memory_budget.check(mesh,
-                          cells,
-                          interior_dofs * cells + boundary_dofs * growth,
-                          linear_solver->name(),
-                          linear_solver->memory_per_dof(),
-                          linear_solver->memory_of_levels(
-                            coarse_cells, triangulation.n_global_levels() +
-                                            refinements),
-                          "Mesh refinement/Initial global refinement" +
-                            std::string(
-                              refinement.strategy ==
-                                  MeshRefinement<dim>::Strategy::global
-                                ? " or Number of cycles"
-                                : ""));
+      memory_budget.check(
+        mesh,
+        cells,
+        interior_dofs * cells + boundary_dofs * growth,
+        linear_solver->name(),
+        linear_solver->memory_per_dof(),
+        linear_solver->memory_of_levels(coarse_cells,
+                                        triangulation.n_global_levels() +
+                                          refinements),
+        "Mesh refinement/Initial global refinement" +
+          std::string(refinement.strategy ==
+                          MeshRefinement<dim>::Strategy::global
+                        ? " or Number of cycles"
+                        : ""));
     };
     const unsigned int first = refinement.initial_global_refinement;
     check_mesh("the first mesh (cycle 0)", first);
@@ -411,10 +411,7 @@ namespace lithostress
                                     *fe_space,
                                     system.constraints,
                                     time);
-      faults.add_constraints(dof_handler,
-                             *fe_space,
-                             system.constraints,
-                             time);
+      faults.add_constraints(dof_handler, *fe_space, system.constraints, time);
     });
     system.constraints.close();
   }
@@ -473,13 +470,14 @@ namespace lithostress
       {
         try
           {
-            sliding_solver.solve(
-              problem,
-              faults,
-              slip_history,
-              owned_solution,
-              statistics.solver,
-              [&](const std::string &line) { log << line << std::endl; });
+            sliding_solver.solve(problem,
+                                 faults,
+                                 slip_history,
+                                 owned_solution,
+                                 statistics.solver,
+                                 [&](const std::string &line) {
+                                   log << line << std::endl;
+                                 });
             if (!defer_slip_commit)
               slip_history.commit();
           }
@@ -612,12 +610,12 @@ namespace lithostress
     if (surface_boundary != numbers::invalid_boundary_id)
       {
         const FaultTrace &trace = faults.trace();
-        const double      side =
-          (summary.throw_m >= 0 ? 1. : -1.) * trace.direction;
+        const double side = (summary.throw_m >= 0 ? 1. : -1.) * trace.direction;
         std::vector<Point<dim>> top;
         for (const auto &row : surface_profile(
                dof_handler, *fe_space, solution, surface_boundary))
-          if (side * (row[0] - trace.surface_x) > 1e-6 * std::abs(row[0]) + 1e-3)
+          if (side * (row[0] - trace.surface_x) >
+              1e-6 * std::abs(row[0]) + 1e-3)
             top.emplace_back(row[0], row[1]);
         const auto stresses = sample_stresses(
           dof_handler, *fe_space, *stress_model, griffith, solution, top);
@@ -751,31 +749,31 @@ namespace lithostress
     Timer              clock(communicator, true);
     const double dofs_per_cell = static_cast<double>(dof_handler.n_dofs()) /
                                  triangulation.n_global_active_cells();
-    refinement.refine(triangulation,
-                      dof_handler,
-                      *fe_space,
-                      *stress_model,
-                      solution,
-                      [&](const double cells, const unsigned int levels) {
-                        const double level_bytes =
-                          linear_solver->memory_of_levels(
-                            triangulation.n_global_coarse_cells(), levels);
-                        memory_budget.check(
-                          mesh,
-                          cells,
-                          dofs_per_cell * cells,
-                          linear_solver->name(),
-                          linear_solver->memory_per_dof(),
-                          level_bytes,
-                          "Mesh refinement/Number of cycles, Refine fraction "
-                          "or Maximum level" +
-                            std::string(level_bytes > 0 ?
-                                          " (or take Solver/Multigrid "
-                                          "hierarchy = local smoothing)" :
-                                          ""));
-                        if (before_change)
-                          before_change();
-                      });
+    refinement.refine(
+      triangulation,
+      dof_handler,
+      *fe_space,
+      *stress_model,
+      solution,
+      [&](const double cells, const unsigned int levels) {
+        const double level_bytes =
+          linear_solver->memory_of_levels(triangulation.n_global_coarse_cells(),
+                                          levels);
+        memory_budget.check(mesh,
+                            cells,
+                            dofs_per_cell * cells,
+                            linear_solver->name(),
+                            linear_solver->memory_per_dof(),
+                            level_bytes,
+                            "Mesh refinement/Number of cycles, Refine fraction "
+                            "or Maximum level" +
+                              std::string(level_bytes > 0
+                                            ? " (or take Solver/Multigrid "
+                                              "hierarchy = local smoothing)"
+                                            : ""));
+        if (before_change)
+          before_change();
+      });
     statistics.mesh_time = clock.wall_time();
   }
 

@@ -182,15 +182,15 @@ namespace lithostress
     FaultSlipHistory slip_history;
     /** Whether solve() leaves the slip of a frictional fault uncommitted
      * (the time loop commits it with an accepted step). */
-    bool defer_slip_commit = false;
-    std::unique_ptr<StressModel<dim>>         stress_model;
-    std::unique_ptr<FiniteElementSpace<dim>>  fe_space;
-    DoFHandler<dim>                           dof_handler;
-    LinearSystem<dim>                         system;
-    TrilinosWrappers::MPI::Vector             solution;
-    std::unique_ptr<LinearSolver<dim>>        linear_solver;
-    MeshRefinement<dim>                       refinement;
-    MemoryBudget                              memory_budget;
+    bool                                     defer_slip_commit = false;
+    std::unique_ptr<StressModel<dim>>        stress_model;
+    std::unique_ptr<FiniteElementSpace<dim>> fe_space;
+    DoFHandler<dim>                          dof_handler;
+    LinearSystem<dim>                        system;
+    TrilinosWrappers::MPI::Vector            solution;
+    std::unique_ptr<LinearSolver<dim>>       linear_solver;
+    MeshRefinement<dim>                      refinement;
+    MemoryBudget                             memory_budget;
     /** The cycle being computed (for the message of an interrupted run). */
     unsigned int cycle = 0;
     /** The model time [s] at which loads and prescribed displacements are

@@ -209,8 +209,7 @@ namespace lithostress
     what << std::setprecision(3) << mesh << " would have about " << cells
          << " cells and " << dofs << " DoFs and need about "
          << memory_text(need) << " (" << solver << ", " << bytes_per_dof / 1e3
-         << " kB per DoF and " << memory_text(bytes_per_rank)
-         << " per rank";
+         << " kB per DoF and " << memory_text(bytes_per_rank) << " per rank";
     if (level_bytes > 0)
       what << ", of which " << memory_text(level_bytes)
            << " for the solver's set-up on a mesh this deep";

@@ -9,12 +9,12 @@ namespace lithostress
   {
     switch (state)
       {
-        case SlipState::stuck:
-          return "stuck";
-        case SlipState::sliding:
-          return "sliding";
-        case SlipState::open:
-          return "open";
+      case SlipState::stuck:
+        return "stuck";
+      case SlipState::sliding:
+        return "sliding";
+      case SlipState::open:
+        return "open";
       }
     return "";
   }

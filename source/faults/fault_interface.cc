@@ -133,12 +133,12 @@ namespace lithostress
                               ">: name it here and give its Interface law");
         prm.enter_subsection(trace.name);
         Fault fault;
-        fault.trace = trace;
+        fault.trace           = trace;
         const std::string law = prm.get("Interface law");
-        fault.law = law == "elastic"         ? Law::elastic :
-                    law == "frictional"      ? Law::frictional :
-                    law == "prescribed slip" ? Law::prescribed_slip :
-                                               Law::locked;
+        fault.law             = law == "elastic"           ? Law::elastic
+                                : law == "frictional"      ? Law::frictional
+                                : law == "prescribed slip" ? Law::prescribed_slip
+                                                           : Law::locked;
         if (fault.law == Law::prescribed_slip)
           {
             const auto function = [&](const std::string &name) {
@@ -360,9 +360,9 @@ namespace lithostress
           const Tensor<1, dim> &jump,
           Tensor<1, dim>       &traction,
           Tensor<2, dim>       &tangent) {
-        tangent = law.shear_stiffness * outer_product(point.shear, point.shear) +
-                  law.normal_stiffness *
-                    outer_product(point.normal, point.normal);
+        tangent =
+          law.shear_stiffness * outer_product(point.shear, point.shear) +
+          law.normal_stiffness * outer_product(point.normal, point.normal);
         traction = tangent * jump;
       },
       matrix,
@@ -471,13 +471,13 @@ namespace lithostress
                      1e-6 * minus->diameter(),
                    ExcMessage("the two sides of a fault face do not match"));
             InterfacePoint point;
-            point.position  = m->quadrature_point(q);
-            point.JxW       = m->JxW(q);
-            point.normal    = m->normal_vector(q);
-            point.shear[0]  = point.normal[1];
-            point.shear[1]  = -point.normal[0];
-            point.depth     = trace.depth(point.position);
-            point.distance  = trace.distance_along(point.position);
+            point.position = m->quadrature_point(q);
+            point.JxW      = m->JxW(q);
+            point.normal   = m->normal_vector(q);
+            point.shear[0] = point.normal[1];
+            point.shear[1] = -point.normal[0];
+            point.depth    = trace.depth(point.position);
+            point.distance = trace.distance_along(point.position);
             for (unsigned int i = 0; i < n_minus; ++i)
               jump[i] = -(*m)[u_minus].value(i, q);
             for (unsigned int i = 0; i < n_plus; ++i)
@@ -578,11 +578,10 @@ namespace lithostress
 
   template <int dim>
   void
-  FaultInterface<dim>::add_constraints(
-    const DoFHandler<dim>         &dof_handler,
-    const FiniteElementSpace<dim> &fe_space,
-    AffineConstraints<double>     &constraints,
-    const double                   time) const
+  FaultInterface<dim>::add_constraints(const DoFHandler<dim> &dof_handler,
+                                       const FiniteElementSpace<dim> &fe_space,
+                                       AffineConstraints<double> &constraints,
+                                       const double               time) const
   {
     if (faults.empty() || (faults.front().law != Law::locked &&
                            faults.front().law != Law::prescribed_slip))
@@ -591,7 +590,7 @@ namespace lithostress
     // The prescribed jump's component d at a node of a fault face (zero
     // for a locked fault).
     const Tensor<1, 2> down = fault.trace.down_dip();
-    const auto         jump = [&](const Point<dim>  &x,
+    const auto         jump = [&](const Point<dim>     &x,
                           const Tensor<1, dim> &normal,
                           const unsigned int    d) {
       if (fault.law != Law::prescribed_slip)
@@ -613,11 +612,10 @@ namespace lithostress
         x.push_back(face->center(true));
       return x;
     };
-    const auto footwall_normal = [&](const Point<dim> &a,
-                                     const Point<dim> &b) {
+    const auto footwall_normal = [&](const Point<dim> &a, const Point<dim> &b) {
       Tensor<1, dim> t = b - a, n;
-      n[0] = t[1];
-      n[1] = -t[0];
+      n[0]             = t[1];
+      n[1]             = -t[0];
       n /= n.norm();
       // Into the hanging wall.
       const Point<dim> mid = a + 0.5 * (b - a);
@@ -643,10 +641,10 @@ namespace lithostress
       }
 
     auto constrain =
-      [&](const types::global_dof_index target,
-          const std::vector<std::pair<types::global_dof_index, double>>
-                      &entries,
-          const double inhomogeneity) {
+      [&](
+        const types::global_dof_index                                  target,
+        const std::vector<std::pair<types::global_dof_index, double>> &entries,
+        const double inhomogeneity) {
         if (!constraints.can_store_line(target) ||
             constraints.is_constrained(target))
           return;

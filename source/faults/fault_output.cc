@@ -17,10 +17,10 @@ namespace lithostress
                const TrilinosWrappers::MPI::Vector &solution,
                const FaultSlipHistory              &history)
   {
-    using InterfacePoint        = typename FaultInterface<dim>::InterfacePoint;
-    const CoulombFriction &law  = faults.friction();
-    const bool frictional       = faults.frictional();
-    const Tensor<1, 2>     down = faults.trace().down_dip();
+    using InterfacePoint         = typename FaultInterface<dim>::InterfacePoint;
+    const CoulombFriction   &law = faults.friction();
+    const bool               frictional = faults.frictional();
+    const Tensor<1, 2>       down       = faults.trace().down_dip();
     std::vector<FaultSample> samples;
     faults.assemble_interface(
       dof_handler,
@@ -41,10 +41,10 @@ namespace lithostress
         sample.opening       = w * p.normal;
         sample.vertical_jump = w[1];
         const double w_s = w * p.shear, w_n = w * p.normal;
-        const double slip_p =
-          frictional && i < history.trial_slip.size() ? history.trial_slip[i] :
-                                                        0;
-        const double t_s = law.shear_stiffness * (w_s - slip_p);
+        const double slip_p = frictional && i < history.trial_slip.size()
+                                ? history.trial_slip[i]
+                                : 0;
+        const double t_s    = law.shear_stiffness * (w_s - slip_p);
         sample.shear_traction =
           t_s * (p.shear[0] * down[0] + p.shear[1] * down[1]);
         sample.normal_traction = law.normal_stiffness * w_n;
@@ -52,11 +52,10 @@ namespace lithostress
           {
             sample.normal_traction -= law.overburden(p.depth);
             sample.friction_limit =
-              law.friction_coefficient *
-              std::max(0.0, -sample.normal_traction);
-            sample.state = i < history.trial_states.size() ?
-                             history.trial_states[i] :
-                             SlipState::stuck;
+              law.friction_coefficient * std::max(0.0, -sample.normal_traction);
+            sample.state = i < history.trial_states.size()
+                             ? history.trial_states[i]
+                             : SlipState::stuck;
             if (sample.state == SlipState::open)
               sample.shear_traction = 0;
           }

@@ -36,8 +36,8 @@ namespace lithostress
     const std::vector<Record> old =
       restored.empty() ? gather(communicator) : restored;
     restored.clear();
-    mesh      = mesh_version;
-    distances = new_distances;
+    mesh                 = mesh_version;
+    distances            = new_distances;
     const unsigned int n = distances.size();
     slip.assign(n, 0.0);
     states.assign(n, SlipState::stuck);
@@ -45,13 +45,12 @@ namespace lithostress
       {
         const double s = distances[i];
         // The first old point at or beyond s.
-        const auto next =
-          std::lower_bound(old.begin(),
-                           old.end(),
-                           s,
-                           [](const Record &r, const double x) {
-                             return r[0] < x;
-                           });
+        const auto next = std::lower_bound(old.begin(),
+                                           old.end(),
+                                           s,
+                                           [](const Record &r, const double x) {
+                                             return r[0] < x;
+                                           });
         if (next == old.begin() || next == old.end())
           {
             const Record &end = next == old.end() ? old.back() : old.front();
@@ -62,7 +61,7 @@ namespace lithostress
         const Record &a = *(next - 1), &b = *next;
         const double  w = b[0] > a[0] ? (s - a[0]) / (b[0] - a[0]) : 0;
         slip[i]         = (1 - w) * a[1] + w * b[1];
-        states[i] = static_cast<SlipState>(w < 0.5 ? a[2] : b[2]);
+        states[i]       = static_cast<SlipState>(w < 0.5 ? a[2] : b[2]);
       }
     trial_slip   = slip;
     trial_states = states;

@@ -75,14 +75,15 @@ namespace lithostress
   {
     prm.enter_subsection("Faults");
     prm.enter_subsection("Sliding solver");
-    parameters.method = prm.get("Method") == "thesis" ? Method::thesis :
-                                                        Method::newton;
-    parameters.max_iterations         = prm.get_integer("Maximum iterations");
-    parameters.residual_tolerance     = prm.get_double("Residual tolerance");
-    parameters.excess_shear_tolerance = prm.get_double("Excess shear tolerance");
-    parameters.convergence_factor     = prm.get_double("Convergence factor");
-    parameters.line_search            = prm.get_bool("Line search");
-    parameters.linear_tolerance = prm.get_double("Linear solver tolerance");
+    parameters.method =
+      prm.get("Method") == "thesis" ? Method::thesis : Method::newton;
+    parameters.max_iterations     = prm.get_integer("Maximum iterations");
+    parameters.residual_tolerance = prm.get_double("Residual tolerance");
+    parameters.excess_shear_tolerance =
+      prm.get_double("Excess shear tolerance");
+    parameters.convergence_factor = prm.get_double("Convergence factor");
+    parameters.line_search        = prm.get_bool("Line search");
+    parameters.linear_tolerance   = prm.get_double("Linear solver tolerance");
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
                         "must be positive");
@@ -124,13 +125,12 @@ namespace lithostress
     const FiniteElementSpace<dim>   &fe_space    = problem.fe_space;
     const LinearSystem<dim>         &system      = problem.system;
     const AffineConstraints<double> &constraints = system.constraints;
-    const MPI_Comm                   communicator =
-      dof_handler.get_communicator();
-    const CoulombFriction &law    = faults.friction();
-    const bool             newton = parameters.method == Method::newton;
-    report               = SolverReport();
-    report.solver        = newton ? "newton" : "thesis";
-    report.linear_solves = 0;
+    const MPI_Comm         communicator = dof_handler.get_communicator();
+    const CoulombFriction &law          = faults.friction();
+    const bool             newton       = parameters.method == Method::newton;
+    report                              = SolverReport();
+    report.solver                       = newton ? "newton" : "thesis";
+    report.linear_solves                = 0;
     Timer timer(communicator, true);
 
     std::vector<double> distances;
@@ -150,10 +150,10 @@ namespace lithostress
 
     const auto stuck_law = [&](const std::vector<double> &slip) {
       return [&law, &slip, &tangents, &affine](const unsigned int    i,
-                                                 const InterfacePoint &p,
-                                                 const Tensor<1, dim> &w,
-                                                 Tensor<1, dim>       &t,
-                                                 Tensor<2, dim>       &D) {
+                                               const InterfacePoint &p,
+                                               const Tensor<1, dim> &w,
+                                               Tensor<1, dim>       &t,
+                                               Tensor<2, dim>       &D) {
         D = law.shear_stiffness * outer_product(p.shear, p.shear) +
             law.normal_stiffness * outer_product(p.normal, p.normal);
         t           = D * w - law.shear_stiffness * slip[i] * p.shear;
@@ -194,40 +194,39 @@ namespace lithostress
     // The residual norm at u (ghosted as u_ghost) with the return mapping
     // from the committed slip, and the largest excess shear against the law
     // of the last solve.
-    double excess = 0;
-    const auto residual_norm =
-      [&](const TrilinosWrappers::MPI::Vector &owned) {
-        u_ghost = owned;
-        system.matrix.vmult(residual, owned);
-        residual -= system.rhs;
-        force     = 0;
-        double ex = 0;
-        faults.assemble_interface(
-          dof_handler,
-          fe_space,
-          constraints,
-          &u_ghost,
-          [&](const unsigned int    i,
-              const InterfacePoint &p,
-              const Tensor<1, dim> &w,
-              Tensor<1, dim>       &t,
-              Tensor<2, dim>       &D) {
-            return_mapping(i, p, w, t, D);
-            ex = std::max(ex,
-                          std::abs((t - tangents[i] * w - affine[i]) * p.shear));
-          },
-          nullptr,
-          nullptr,
-          &force);
-        residual += force;
-        constraints.set_zero(residual);
-        excess = Utilities::MPI::max(ex, communicator);
-        return residual.l2_norm();
-      };
+    double     excess        = 0;
+    const auto residual_norm = [&](const TrilinosWrappers::MPI::Vector &owned) {
+      u_ghost = owned;
+      system.matrix.vmult(residual, owned);
+      residual -= system.rhs;
+      force     = 0;
+      double ex = 0;
+      faults.assemble_interface(
+        dof_handler,
+        fe_space,
+        constraints,
+        &u_ghost,
+        [&](const unsigned int    i,
+            const InterfacePoint &p,
+            const Tensor<1, dim> &w,
+            Tensor<1, dim>       &t,
+            Tensor<2, dim>       &D) {
+          return_mapping(i, p, w, t, D);
+          ex =
+            std::max(ex, std::abs((t - tangents[i] * w - affine[i]) * p.shear));
+        },
+        nullptr,
+        nullptr,
+        &force);
+      residual += force;
+      constraints.set_zero(residual);
+      excess = Utilities::MPI::max(ex, communicator);
+      return residual.l2_norm();
+    };
 
-    TrilinosWrappers::SparseMatrix              matrix;
-    std::unique_ptr<Epetra_MultiVector>         modes;
-    TrilinosWrappers::PreconditionAMG           amg;
+    TrilinosWrappers::SparseMatrix      matrix;
+    std::unique_ptr<Epetra_MultiVector> modes;
+    TrilinosWrappers::PreconditionAMG   amg;
     // A fault's normal spring is far stiffer than the rock next to it
     // (thesis: 1e15 N/m, i.e. k_n l / E h ~ 1e3): it ties the two fields'
     // DoFs at each fault node into stiff pairs, which point smoothers
@@ -239,7 +238,7 @@ namespace lithostress
     // smoother. Neither is symmetric here: every solve is GMRES.
     typename AMGSolver<dim>::Settings ilu_settings, chebyshev_settings;
     ilu_settings.smoother = "ILU";
-    const auto set_up = [&](const auto &law_at_point) {
+    const auto set_up     = [&](const auto &law_at_point) {
       matrix.copy_from(system.matrix);
       rhs = system.rhs;
       faults.assemble_interface(dof_handler,
@@ -282,7 +281,7 @@ namespace lithostress
                                    "GMRES with AMG",
                                    rhs.l2_norm(),
                                    "raise Faults/Sliding solver/Linear "
-                                   "solver tolerance");
+                                      "solver tolerance");
           }
         report.iterations += iterations_of(control);
         return true;
@@ -317,8 +316,7 @@ namespace lithostress
         // The elastic predictor, then Newton steps.
         TrilinosWrappers::MPI::Vector x(u), step(u), trial(u);
         r_norm = residual_norm(u);
-        for (iteration = 1; iteration <= parameters.max_iterations;
-             ++iteration)
+        for (iteration = 1; iteration <= parameters.max_iterations; ++iteration)
           {
             if (iteration == 1)
               set_up(stuck_law(history.slip));
@@ -344,12 +342,14 @@ namespace lithostress
             if (!std::isfinite(r_norm))
               throw ComputationError(
                 "the Newton iteration for the sliding on fault <" +
-                faults.trace().name + "> produced a residual that is not "
-                "finite in iteration " + std::to_string(iteration));
+                faults.trace().name +
+                "> produced a residual that is not "
+                "finite in iteration " +
+                std::to_string(iteration));
             std::ostringstream line;
-            line << "  sliding: Newton iteration " << iteration
-                 << ": residual " << std::setprecision(3) << r_norm / f
-                 << ", excess shear " << excess << " Pa, " << count_states()
+            line << "  sliding: Newton iteration " << iteration << ": residual "
+                 << std::setprecision(3) << r_norm / f << ", excess shear "
+                 << excess << " Pa, " << count_states()
                  << (alpha < 1 ? ", step " + std::to_string(alpha) : "");
             progress(line.str());
             if (r_norm <= parameters.residual_tolerance * f &&
@@ -366,8 +366,7 @@ namespace lithostress
         // into the slip.
         set_up(stuck_law(thesis_slip));
         double first_excess = 0;
-        for (iteration = 1; iteration <= parameters.max_iterations;
-             ++iteration)
+        for (iteration = 1; iteration <= parameters.max_iterations; ++iteration)
           {
             if (iteration > 1)
               {
@@ -396,7 +395,9 @@ namespace lithostress
                   Tensor<2, dim> &) {
                 // The excess over the limit at the elastic traction.
                 CoulombFriction::Response &r = responses[i];
-                r = law.respond(w * p.shear, w * p.normal, thesis_slip[i],
+                r                            = law.respond(w * p.shear,
+                                w * p.normal,
+                                thesis_slip[i],
                                 p.depth);
                 const double tau =
                   law.shear_stiffness * (w * p.shear - thesis_slip[i]);
@@ -408,11 +409,11 @@ namespace lithostress
                 ex = std::max(ex, std::abs(e));
                 if (e != 0)
                   slid[i] = true;
-                thesis_slip[i] += parameters.convergence_factor * e /
-                                  law.shear_stiffness;
-                r.state = r.state == SlipState::open ? SlipState::open :
-                          slid[i]                    ? SlipState::sliding :
-                                                       SlipState::stuck;
+                thesis_slip[i] +=
+                  parameters.convergence_factor * e / law.shear_stiffness;
+                r.state = r.state == SlipState::open ? SlipState::open
+                          : slid[i]                  ? SlipState::sliding
+                                                     : SlipState::stuck;
               },
               nullptr,
               nullptr,
@@ -461,17 +462,19 @@ namespace lithostress
         history.trial_slip[i]   = responses[i].plastic_slip;
         history.trial_states[i] = responses[i].state;
       }
-    report.nonlinear_iterations = std::min(iteration, parameters.max_iterations);
-    report.final_residual       = r_norm / f;
-    report.solve_time           = timer.wall_time();
-    solution                    = u;
+    report.nonlinear_iterations =
+      std::min(iteration, parameters.max_iterations);
+    report.final_residual = r_norm / f;
+    report.solve_time     = timer.wall_time();
+    solution              = u;
     if (!converged)
       {
         std::ostringstream what;
         what << std::setprecision(3) << "the frictional sliding on fault <"
              << faults.trace().name << "> did not converge in "
              << parameters.max_iterations << " " << report.solver
-             << " iterations (residual " << r_norm / f << " of the load, excess "
+             << " iterations (residual " << r_norm / f
+             << " of the load, excess "
              << "shear " << excess
              << " Pa); the last iterate is written out. Raise Faults/Sliding "
                 "solver/Maximum iterations"

@@ -360,11 +360,11 @@ namespace lithostress
   template <int dim>
   void
   MeshRefinement<dim>::refine(
-    parallel::distributed::Triangulation<dim> &tria,
-    const DoFHandler<dim>                     &dof_handler,
-    const FiniteElementSpace<dim>             &fe_space,
-    const StressModel<dim>                    &stress_model,
-    const TrilinosWrappers::MPI::Vector       &solution,
+    parallel::distributed::Triangulation<dim>       &tria,
+    const DoFHandler<dim>                           &dof_handler,
+    const FiniteElementSpace<dim>                   &fe_space,
+    const StressModel<dim>                          &stress_model,
+    const TrilinosWrappers::MPI::Vector             &solution,
     const std::function<void(double, unsigned int)> &check_new_mesh) const
   {
     if (strategy == Strategy::global)
@@ -401,17 +401,18 @@ namespace lithostress
         {
           refined += cell->refine_flag_set() ? 1 : 0;
           coarsened += cell->coarsen_flag_set() ? 1 : 0;
-          deepest = std::max<unsigned int>(
-            deepest,
-            cell->level() + (cell->refine_flag_set() ? 1 : 0) -
-              (cell->coarsen_flag_set() ? 1 : 0));
+          deepest =
+            std::max<unsigned int>(deepest,
+                                   cell->level() +
+                                     (cell->refine_flag_set() ? 1 : 0) -
+                                     (cell->coarsen_flag_set() ? 1 : 0));
         }
     const unsigned int children = GeometryInfo<dim>::max_children_per_cell;
-    check_new_mesh(
-      tria.n_global_active_cells() +
-      Utilities::MPI::sum((children - 1) * (refined - coarsened / children),
-                          tria.get_communicator()),
-      Utilities::MPI::max(deepest, tria.get_communicator()) + 1);
+    check_new_mesh(tria.n_global_active_cells() +
+                     Utilities::MPI::sum((children - 1) *
+                                           (refined - coarsened / children),
+                                         tria.get_communicator()),
+                   Utilities::MPI::max(deepest, tria.get_communicator()) + 1);
     tria.execute_coarsening_and_refinement();
   }
 

@@ -65,8 +65,8 @@ namespace lithostress
       /** d(t_s, t_n)/d(w_s, w_n): index 0 = shear, 1 = normal. */
       Tensor<2, 2> tangent;
       /** The accumulated slip p after this response [m]. */
-      double plastic_slip = 0;
-      SlipState state = SlipState::stuck;
+      double    plastic_slip = 0;
+      SlipState state        = SlipState::stuck;
     };
 
     /** (ρ_l − ρ_w) g d: what the lithostatic load less the pore pressure

@@ -57,12 +57,13 @@ namespace lithostress
      * throw).
      */
     void
-    refine(parallel::distributed::Triangulation<dim> &tria,
-           const DoFHandler<dim>                     &dof_handler,
-           const FiniteElementSpace<dim>             &fe_space,
-           const StressModel<dim>                    &stress_model,
-           const TrilinosWrappers::MPI::Vector       &solution,
-           const std::function<void(double, unsigned int)> &check_new_mesh) const;
+    refine(
+      parallel::distributed::Triangulation<dim>       &tria,
+      const DoFHandler<dim>                           &dof_handler,
+      const FiniteElementSpace<dim>                   &fe_space,
+      const StressModel<dim>                          &stress_model,
+      const TrilinosWrappers::MPI::Vector             &solution,
+      const std::function<void(double, unsigned int)> &check_new_mesh) const;
 
     /** The error indicator per active cell (zero on non-owned cells). */
     Vector<float>

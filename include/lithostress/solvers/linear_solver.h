@@ -25,7 +25,7 @@ namespace lithostress
   struct SolverReport
   {
     std::string  solver;
-    unsigned int iterations     = 0;
+    unsigned int iterations = 0;
     /** Nonlinear iterations and linear solves (a frictional fault's
      * sliding solver; 0 and 1 for a linear solve). */
     unsigned int nonlinear_iterations = 0, linear_solves = 1;
