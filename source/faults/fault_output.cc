@@ -20,7 +20,6 @@ namespace lithostress
     using InterfacePoint         = typename FaultInterface<dim>::InterfacePoint;
     const CoulombFriction   &law = faults.friction();
     const bool               frictional = faults.frictional();
-    const Tensor<1, 2>       down       = faults.trace().down_dip();
     std::vector<FaultSample> samples;
     faults.assemble_interface(
       dof_handler,
@@ -32,7 +31,8 @@ namespace lithostress
           const Tensor<1, dim> &w,
           Tensor<1, dim> &,
           Tensor<2, dim> &) {
-        FaultSample sample;
+        const Tensor<1, 2> down = faults.trace().down_dip(p.position);
+        FaultSample        sample;
         sample.s             = p.distance;
         sample.x             = p.position[0];
         sample.y             = p.position[1];

@@ -1,4 +1,5 @@
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/manifold_lib.h>
 
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
@@ -260,14 +261,36 @@ namespace lithostress
     prm.declare_entry("Fault surface x",
                       "",
                       Patterns::Anything(),
-                      "x of the surface trace of a planar fault through the "
-                      "whole box [length unit]; empty = no fault. The "
+                      "x of the surface trace of a fault through the "
+                      "whole box [length unit]; empty = no fault; `auto` "
+                      "= where a fault with an arc implies it. The "
                       "fault's interface law is set in the `Faults` section "
                       "under the name `fault`.");
     prm.declare_entry("Fault dip",
                       "63.43",
                       Patterns::Double(),
-                      "Dip of the fault [degrees], in (0, 90].");
+                      "Dip of the fault's planar part [degrees], in (0, "
+                      "90].");
+    prm.declare_entry("Fault arc centre",
+                      "",
+                      Patterns::Anything(),
+                      "A curved fault: below `Fault arc from depth` the "
+                      "fault is the circle through this centre `x, y` "
+                      "[length unit] with the `Fault arc radius` (thesis "
+                      "§6.2 listric fault: 417.5, 0 and 21.25 km from 10 km "
+                      "depth; §6.3.2: 315, -70 and 71 km from the surface), "
+                      "carried by a manifold so that refinement stays on "
+                      "it; empty = planar.");
+    prm.declare_entry("Fault arc radius",
+                      "0",
+                      Patterns::Double(0),
+                      "Radius of the fault's arc [length unit].");
+    prm.declare_entry("Fault arc from depth",
+                      "0",
+                      Patterns::Double(0),
+                      "Depth below the top where the planar part ends and "
+                      "the arc begins [length unit]; it must be a row of "
+                      "the coarse mesh (a layer interface or a cell row).");
     prm.declare_entry("Fault dips towards",
                       "right",
                       Patterns::Selection("right|left"),
@@ -294,9 +317,7 @@ namespace lithostress
     with_fault                = !fault_x.empty();
     if (with_fault)
       {
-        fault.name = "fault";
-        fault.surface_x =
-          parse_number(fault_x, where + "Fault surface x") * scale;
+        fault.name               = "fault";
         const double dip_degrees = prm.get_double("Fault dip");
         if (!(dip_degrees > 0 && dip_degrees <= 90))
           throw_input_error(where + "Fault dip",
@@ -304,6 +325,32 @@ namespace lithostress
                               prm.get("Fault dip"));
         fault.dip       = dip_degrees * numbers::PI / 180;
         fault.direction = prm.get("Fault dips towards") == "right" ? 1 : -1;
+        const std::string centre = Utilities::trim(prm.get("Fault arc centre"));
+        fault.has_arc            = !centre.empty();
+        if (fault.has_arc)
+          {
+            const auto c = split_list(centre);
+            if (c.size() != 2)
+              throw_input_error(where + "Fault arc centre",
+                                "<" + centre + "> is not `x, y`");
+            fault.arc_centre =
+              Point<2>(parse_number(c[0], where + "Fault arc centre"),
+                       parse_number(c[1], where + "Fault arc centre")) *
+              scale;
+            fault.arc_radius = prm.get_double("Fault arc radius") * scale;
+            fault.arc_from_depth =
+              prm.get_double("Fault arc from depth") * scale;
+            if (!(fault.arc_radius > 0))
+              throw_input_error(where + "Fault arc radius",
+                                "must be positive for an arc");
+          }
+        if (fault_x == "auto" && !fault.has_arc)
+          throw_input_error(where + "Fault surface x",
+                            "`auto` needs a Fault arc centre");
+        surface_x_given =
+          fault_x == "auto"
+            ? std::nan("")
+            : parse_number(fault_x, where + "Fault surface x") * scale;
       }
     prm.leave_subsection();
 
@@ -323,7 +370,61 @@ namespace lithostress
     cells_per_layer.assign(counts.begin(), counts.end());
     if (with_fault)
       {
-        fault.top_y = interfaces.front();
+        fault.top_y     = interfaces.front();
+        fault.surface_x = surface_x_given;
+        if (fault.has_arc)
+          {
+            const std::string arc   = where + "Fault arc centre";
+            const double      y_top = interfaces.front() - fault.arc_from_depth;
+            const double      y_bot = interfaces.back();
+            if (!(y_top > y_bot))
+              throw_input_error(where + "Fault arc from depth",
+                                "must lie above the base");
+            // A graph x(y) that keeps its dip direction: the arc reaches
+            // both ends and does not pass the height of its centre.
+            const double cy = fault.arc_centre[1], r = fault.arc_radius;
+            if (std::abs(y_top - cy) > r * (1 + 1e-12) ||
+                std::abs(y_bot - cy) > r * (1 + 1e-12))
+              throw_input_error(arc,
+                                "the arc misses the box: the circle does not "
+                                "reach from the depth where it begins to the "
+                                "base");
+            if (y_bot < cy - 1e-9 * width && cy < y_top - 1e-9 * width)
+              throw_input_error(arc,
+                                "the arc passes the height of its centre "
+                                "between where it begins and the base, so "
+                                "the fault would turn back");
+            fault.choose_branch(
+              0.5 * (fault.arc_from_depth + interfaces.front() - y_bot));
+            // The surface trace where the arc and the planar part imply it.
+            const double x_junction =
+              fault.arc_centre[0] +
+              fault.branch *
+                std::sqrt(std::max(0.0, r * r - (y_top - cy) * (y_top - cy)));
+            const double implied = x_junction - fault.direction *
+                                                  fault.arc_from_depth /
+                                                  std::tan(fault.dip);
+            if (std::isnan(surface_x_given))
+              fault.surface_x = implied;
+            else if (std::abs(surface_x_given - implied) > 1e-6 * width)
+              throw_input_error(where + "Fault surface x",
+                                "the arc and the planar part imply " +
+                                  std::to_string(implied / scale) +
+                                  "; give that or `auto`");
+            // The arc must begin on a row of the coarse mesh.
+            bool on_row = fault.arc_from_depth == 0;
+            for (unsigned int layer = 0; layer + 1 < interfaces.size(); ++layer)
+              for (unsigned int c = 0; c <= cells_per_layer[layer]; ++c)
+                on_row = on_row ||
+                         std::abs(interfaces[layer] -
+                                  (interfaces[layer] - interfaces[layer + 1]) *
+                                    c / cells_per_layer[layer] -
+                                  y_top) < 1e-9 * width;
+            if (!on_row)
+              throw_input_error(where + "Fault arc from depth",
+                                "must be a row of the coarse mesh (a layer "
+                                "interface or a row of Cells per layer)");
+          }
         for (const double y : {interfaces.front(), interfaces.back()})
           if (!(fault.x_at(y) > 0 && fault.x_at(y) < width))
             throw_input_error(where + "Fault surface x",
@@ -391,6 +492,32 @@ namespace lithostress
         }
     tria.create_triangulation(vertices, cells, SubCellData());
     const double tolerance = 1e-9 * width;
+    if (with_fault && fault.has_arc)
+      {
+        // The fault's faces on the arc follow a polar manifold (id 1),
+        // their cells and those cells' other faces a transfinite
+        // interpolation (id 2), so that refinement stays on the arc and
+        // the cells next to it keep their shape.
+        const auto on_fault_arc = [&](const Point<2> &p) {
+          return fault.depth(p) >= fault.arc_from_depth - tolerance &&
+                 std::abs(p[0] - fault.x_at(p[1])) < tolerance;
+        };
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (!face->at_boundary() && on_fault_arc(face->vertex(0)) &&
+                on_fault_arc(face->vertex(1)))
+              {
+                cell->set_manifold_id(2);
+                for (const auto &f : cell->face_iterators())
+                  if (f->manifold_id() == numbers::flat_manifold_id)
+                    f->set_manifold_id(2);
+                face->set_manifold_id(1);
+              }
+        tria.set_manifold(1, PolarManifold<2>(fault.arc_centre));
+        TransfiniteInterpolationManifold<2> transfinite;
+        transfinite.initialize(tria);
+        tria.set_manifold(2, transfinite);
+      }
     for (const auto &cell : tria.active_cell_iterators())
       {
         const double y = cell->center()[1];

@@ -17,6 +17,13 @@ semi-smooth Newton method on coarse meshes (Debug build).
   fault's flexure: at most throw sqrt(2) exp(-500 km / alpha), alpha the
   flexural parameter of the plate on its fluid base.
 * The same answer on 1 and 2 ranks (throw and slip to 1e-8).
+* Listric faults (prm/listric_normal_fault.prm: planar to 10 km, then an
+  arc; prm/listric_thrust_fault.prm: an arc from the surface): normal sense
+  under tension with the sliding depth growing from 30 to 50 MPa and less
+  throw than the plane fault at 50 MPa; reverse sense under compression,
+  where the throw is the vertical part of the surface slip, slip sin(dip)
+  with the arc's 9.6-degree dip at its trace (to 0.1 %: only the opening's
+  vertical part, 1e-5 m, differs).
 * A Newton iteration stopped before convergence ends with a clear message
   naming the entry to change, a non-zero exit, and the last iterate in
   fault.csv.
@@ -112,6 +119,26 @@ sliding = [p for p in fault_t if p["state"] == "sliding"]
 check(st["throw_m"] < 0 and sliding and all(p["slip"] < 0 for p in sliding),
       "thrust fault, 50 MPa compression: reverse sense: throw %.1f m (hanging wall up), all %d "
       "sliding points slip up dip" % (st["throw_m"], len(sliding)))
+# Listric faults.
+LISTRIC = os.path.join(ROOT, "prm", "listric_normal_fault.prm")
+LISTRIC_THRUST = os.path.join(ROOT, "prm", "listric_thrust_fault.prm")
+_, l50, fl50, _ = fault_run(LISTRIC, "output_listric_50", 2)
+_, l30, fl30, _ = fault_run(LISTRIC, "output_listric_30", 2, tension=3e7)
+sliding = [p for p in fl50 if p["state"] == "sliding"]
+check(l50["throw_m"] > 0 and sliding and all(p["slip"] > 0 for p in sliding)
+      and l30["sliding_depth_m"] < l50["sliding_depth_m"] and l50["throw_m"] < s1["throw_m"],
+      "listric normal fault: normal sense, sliding depth %.1f km at 30 MPa and %.1f km at 50 MPa "
+      "(thesis: 10 km, the whole layer), throw %.1f m at 50 MPa, less than the plane fault's %.1f m"
+      % (l30["sliding_depth_m"] / 1e3, l50["sliding_depth_m"] / 1e3, l50["throw_m"], s1["throw_m"]))
+_, lt, flt, _ = fault_run(LISTRIC_THRUST, "output_listric_thrust", 2)
+top = flt[0]
+surface_dip = math.atan2(math.sqrt(71.0 ** 2 - 70.0 ** 2), 70.0)
+expected = top["slip"] * math.sin(surface_dip)
+check(lt["throw_m"] < 0 and top["slip"] < 0 and top["s"] == 0
+      and abs(lt["throw_m"] - expected) <= 1e-3 * abs(expected),
+      "listric thrust: reverse sense, surface slip %.1f m, throw %.3f m = slip sin(%.1f deg) = %.3f m "
+      "(to 0.1 %%)" % (top["slip"], lt["throw_m"], math.degrees(surface_dip), expected))
+
 # Not converged: the last iterate is written out.
 out = os.path.abspath("output_normal_fault_not_converged")
 result = run(NORMAL, out, 1, QUIET + ["Mesh refinement/Initial global refinement=1",

@@ -72,6 +72,7 @@ expected = {
     "friction_negative": "Faults/fault/Friction coefficient>: must be at least 0, got -0.1",
     "fault_stiffness_zero": "Faults/fault/Shear stiffness>: must be greater than 0, got 0",
     "fault_stiffness_missing": "Faults/fault/Normal stiffness>: is needed by the elastic law",
+    "fault_arc_misses_box": "Geometry/Layered box/Fault arc centre>: the arc misses the box",
     "rigid_edge_pinned_corner": "Boundary conditions/right/x>: is `rigid`, but another part already prescribes",
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",

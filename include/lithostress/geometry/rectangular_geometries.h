@@ -118,9 +118,12 @@ namespace lithostress
     std::vector<std::string>  layer_names;
     std::vector<unsigned int> cells_per_layer;
     unsigned int              cells_across;
-    /** The planar fault through the box, if `Fault surface x` is set. */
+    /** The fault through the box, if `Fault surface x` is set: planar,
+     * or with a circular arc below a depth. */
     bool       with_fault = false;
     FaultTrace fault;
+    /** `Fault surface x` as given [m] (NaN for `auto`). */
+    double surface_x_given = 0;
   };
 } // namespace lithostress
 
