@@ -604,30 +604,17 @@ namespace lithostress
     FaultSummary summary         = summarize_fault(samples);
     summary.nonlinear_iterations = statistics.solver.nonlinear_iterations;
     summary.linear_solves        = statistics.solver.linear_solves;
-    // The smallest Griffith C on the top surface of the downthrown side
-    // (the hanging wall if the throw is positive).
-    summary.tensile_failure_distance_m = std::nan("");
-    if (surface_boundary != numbers::invalid_boundary_id)
-      {
-        const FaultTrace &trace = faults.trace();
-        const double side = (summary.throw_m >= 0 ? 1. : -1.) * trace.direction;
-        std::vector<Point<dim>> top;
-        for (const auto &row : surface_profile(
-               dof_handler, *fe_space, solution, surface_boundary))
-          if (side * (row[0] - trace.surface_x) >
-              1e-6 * std::abs(row[0]) + 1e-3)
-            top.emplace_back(row[0], row[1]);
-        const auto stresses = sample_stresses(
-          dof_handler, *fe_space, *stress_model, griffith, solution, top);
-        double lowest = std::numeric_limits<double>::max();
-        for (const auto &sample : stresses)
-          if (sample.analysis.degree_of_failure < lowest)
-            {
-              lowest = sample.analysis.degree_of_failure;
-              summary.tensile_failure_distance_m =
-                std::abs(sample.value.point[0] - trace.surface_x);
-            }
-      }
+    summary.tensile_failure_distance_m =
+      surface_boundary == numbers::invalid_boundary_id
+        ? std::nan("")
+        : tensile_failure_distance(faults.trace(),
+                                   summary.throw_m,
+                                   dof_handler,
+                                   *fe_space,
+                                   *stress_model,
+                                   griffith,
+                                   solution,
+                                   surface_boundary);
     on_all_ranks(communicator, [&]() {
       if (Utilities::MPI::this_mpi_process(communicator) == 0)
         {

@@ -2,10 +2,13 @@
 
 #include <lithostress/faults/fault_output.h>
 #include <lithostress/output/output_file.h>
+#include <lithostress/postprocess/stress_sampling.h>
+#include <lithostress/postprocess/surface_profile.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 
 namespace lithostress
 {
@@ -118,6 +121,34 @@ namespace lithostress
     return summary;
   }
 
+  template <int dim>
+  double
+  tensile_failure_distance(const FaultTrace                    &trace,
+                           const double                         throw_m,
+                           const DoFHandler<dim>               &dof_handler,
+                           const FiniteElementSpace<dim>       &fe_space,
+                           const StressModel<dim>              &stress_model,
+                           const GriffithFailure               &griffith,
+                           const TrilinosWrappers::MPI::Vector &solution,
+                           const types::boundary_id             top)
+  {
+    const double            side = (throw_m >= 0 ? 1. : -1.) * trace.direction;
+    std::vector<Point<dim>> points;
+    for (const auto &row :
+         surface_profile(dof_handler, fe_space, solution, top))
+      if (side * (row[0] - trace.surface_x) > 1e-6 * std::abs(row[0]) + 1e-3)
+        points.emplace_back(row[0], row[1]);
+    double distance = std::nan(""), lowest = std::numeric_limits<double>::max();
+    for (const auto &sample : sample_stresses(
+           dof_handler, fe_space, stress_model, griffith, solution, points))
+      if (sample.analysis.degree_of_failure < lowest)
+        {
+          lowest   = sample.analysis.degree_of_failure;
+          distance = std::abs(sample.value.point[0] - trace.surface_x);
+        }
+    return distance;
+  }
+
   void
   write_fault_summary(const std::string &filename, const FaultSummary &summary)
   {
@@ -139,6 +170,15 @@ namespace lithostress
     out.commit();
   }
 
+  template double
+  tensile_failure_distance(const FaultTrace &,
+                           const double,
+                           const DoFHandler<2> &,
+                           const FiniteElementSpace<2> &,
+                           const StressModel<2> &,
+                           const GriffithFailure &,
+                           const TrilinosWrappers::MPI::Vector &,
+                           const types::boundary_id);
   template std::vector<FaultSample>
   sample_fault(const FaultInterface<2> &,
                const DoFHandler<2> &,

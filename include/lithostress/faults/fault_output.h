@@ -7,6 +7,8 @@
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/faults/fault_interface.h>
 #include <lithostress/faults/fault_slip_history.h>
+#include <lithostress/materials/stress_model.h>
+#include <lithostress/postprocess/griffith_failure.h>
 
 #include <string>
 #include <vector>
@@ -76,6 +78,20 @@ namespace lithostress
   /** Throw and sliding depth from @p samples. */
   FaultSummary
   summarize_fault(const std::vector<FaultSample> &samples);
+
+  /** Distance from the surface trace of @p trace to the smallest Griffith
+   * C (@p griffith) among the nodes of the top surface @p top on the
+   * downthrown side (the hanging wall if @p throw_m ≥ 0) [m]. */
+  template <int dim>
+  double
+  tensile_failure_distance(const FaultTrace                    &trace,
+                           const double                         throw_m,
+                           const DoFHandler<dim>               &dof_handler,
+                           const FiniteElementSpace<dim>       &fe_space,
+                           const StressModel<dim>              &stress_model,
+                           const GriffithFailure               &griffith,
+                           const TrilinosWrappers::MPI::Vector &solution,
+                           const types::boundary_id             top);
 
   /** Write fault_summary.json. */
   void
