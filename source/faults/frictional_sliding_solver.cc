@@ -63,8 +63,10 @@ namespace lithostress
     prm.declare_entry("Linear solver tolerance",
                       "1e-11",
                       Patterns::Double(0),
-                      "Relative tolerance of each linear solve (GMRES or CG "
-                      "with AMG).");
+                      "Relative tolerance of each linear solve of a "
+                      "frictional fault (GMRES with the elasticity AMG, "
+                      "whatever Solver/Type says: the tangent is not "
+                      "symmetric).");
     prm.leave_subsection();
     prm.leave_subsection();
   }
