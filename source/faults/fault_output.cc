@@ -54,8 +54,6 @@ namespace lithostress
         if (frictional)
           {
             sample.normal_traction -= law.overburden(p.depth);
-            sample.friction_limit =
-              law.friction_coefficient * std::max(0.0, -sample.normal_traction);
             sample.state = i < history.trial_states.size()
                              ? history.trial_states[i]
                              : SlipState::stuck;

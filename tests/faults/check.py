@@ -156,7 +156,7 @@ def read_fault(out):
     return [dict(zip(header.split(","), [float(v) for v in r[:7]] + [r[7]])) for r in rows]
 
 
-def block_check(out, tau, slip, label):
+def block_check(out, tau, slip):
     """Points and fault.csv against the uniform-stress solution with the
     hanging wall moved up by @p slip."""
     rows = read_csv(os.path.join(out, "point_values.csv"))
@@ -182,7 +182,7 @@ for ranks in (1, 2):
     out = os.path.abspath("output_frictional_fault_%d" % ranks)
     result = run("faults/frictional_fault.prm", out, ranks)
     slip = D_RIGHT - TAU_F * L / G0
-    rows, fault, worst = block_check(out, TAU_F, slip, "sliding")
+    rows, fault, worst = block_check(out, TAU_F, slip)
     iterations = [int(m) for m in re.findall(r"Newton iteration (\d+):", result.stdout)]
     summary = read_summary(out)
     check(len(rows) == 6 and len(fault) == 24 and all(f["state"] == "sliding" for f in fault)
@@ -207,7 +207,7 @@ with open("frictional_fault_stuck.prm", "w") as f:
 for ranks in (1, 2):
     out = os.path.abspath("output_frictional_fault_stuck_%d" % ranks)
     run(os.path.abspath("frictional_fault_stuck.prm"), out, ranks)
-    rows, fault, worst = block_check(out, 3e7, 3e7 / 1e7, "stuck")
+    rows, fault, worst = block_check(out, 3e7, 3e7 / 1e7)
     summary = read_summary(out)
     check(len(fault) == 24 and all(f["state"] == "stuck" for f in fault) and worst < 1e-9
           and summary["nonlinear_iterations"] == 1,

@@ -31,8 +31,8 @@ namespace lithostress
   {
     double    s = 0, x = 0, y = 0, depth = 0;
     double    slip = 0, opening = 0, shear_traction = 0, normal_traction = 0;
-    double    friction_limit = 0, vertical_jump = 0;
-    SlipState state = SlipState::stuck;
+    double    vertical_jump = 0;
+    SlipState state         = SlipState::stuck;
 
     /** For gathering samples over the ranks. */
     template <class Archive>
@@ -40,7 +40,7 @@ namespace lithostress
     serialize(Archive &archive, const unsigned int)
     {
       archive &s &x &y &depth &slip &opening &shear_traction &normal_traction
-        &friction_limit &vertical_jump &state;
+        &vertical_jump &state;
     }
   };
 
