@@ -21,6 +21,18 @@ Two truths are asserted for each integrator:
 2. The error against the closed form falls with the step as the scheme's
    order: 1 for backward Euler, 2 for theta = 1/2, BDF2 and the thesis
    scheme (steps tau/10, tau/20, tau/40).
+
+Plane stress (sigma_zz = 0, eps_zz free): the in-plane sum A = s_xx + s_yy
+and difference D = s_xx - s_yy decouple. With the 3-D deviator creeping,
+  eps_xx - eps_yy:  D'/(2G) + D/(2 eta) = (e1 - e2) f'
+  eps_xx + eps_yy:  A'/A_e + A/(6 eta) = (e1 + e2) f',
+  A_e = 18 G K/(3K + 4G) = E/(1 - nu)  (the elastic plane-stress value),
+so D relaxes with tau and A with tau_A = 6 eta/A_e = tau (1 + 4G/(3K)):
+  relaxation: D = 2G (e1 - e2) exp(-t/tau),  A = A_e (e1 + e2) exp(-t/tau_A)
+  rate:       D = 2G (e1 - e2)(1 - exp(-t/tau)),
+              A = A_e (e1 + e2)(tau_A/tau)(1 - exp(-t/tau_A)).
+BDF2 and backward Euler must converge to these with their orders, and
+sigma_zz must vanish.
 """
 import math
 import os
@@ -40,6 +52,19 @@ def closed_form(case, t, G, K, tau, e1, e2):
     dev = (e1 - tr / 3, e2 - tr / 3, -tr / 3)
     S = math.exp(-t / tau) if case == "relaxation" else 1 - math.exp(-t / tau)
     return [K * tr * f + 2 * G * d * S for d in dev]
+
+
+def closed_form_plane_stress(case, t, G, K, tau, e1, e2):
+    """(s_xx, s_yy, s_zz) of the plane-stress block (module docstring)."""
+    A_e = 18 * G * K / (3 * K + 4 * G)
+    tau_A = tau * (1 + 4 * G / (3 * K))
+    if case == "relaxation":
+        D = 2 * G * (e1 - e2) * math.exp(-t / tau)
+        A = A_e * (e1 + e2) * math.exp(-t / tau_A)
+    else:
+        D = 2 * G * (e1 - e2) * (1 - math.exp(-t / tau))
+        A = A_e * (e1 + e2) * tau_A / tau * (1 - math.exp(-t / tau_A))
+    return [(A + D) / 2, (A - D) / 2, 0.0]
 
 
 def discrete(case, times, h, theta, G, K, tau, e1, e2):
@@ -70,10 +95,11 @@ def discrete_bdf2(case, times, h, G, K, tau, e1, e2):
             for t in times}
 
 
-def simulate(case, scheme, theta, step_years):
-    out = os.path.abspath("output_maxwell_%s_%s_%g_%g"
-                          % (case, scheme.replace(" ", "_"), theta, step_years))
-    sets = ["Time stepping/Scheme=" + scheme, "Time stepping/Theta=%g" % theta,
+def simulate(case, scheme, theta, step_years, plane_state="plane strain"):
+    out = os.path.abspath("output_maxwell_%s_%s_%g_%g_%s"
+                          % (case, scheme.replace(" ", "_"), theta, step_years,
+                             plane_state.replace(" ", "_")))
+    sets = ["Plane state=" + plane_state, "Time stepping/Scheme=" + scheme, "Time stepping/Theta=%g" % theta,
             "Time stepping/First time step=%g" % step_years,
             "Time stepping/Fixed point tolerance=1e-12"]
     if case == "rate":
@@ -130,6 +156,28 @@ for case in ("relaxation", "rate"):
                   "%s, h = %g yr: the scheme's recurrence reproduced, largest difference %.1e of 2G|e|"
                   % (label, h, worst_discrete))
             check(worst_shear < 1e-8, "%s, h = %g yr: no shear stress (%.1e)" % (label, h, worst_shear))
+            errors.append(worst_exact)
+        rates = [math.log2(errors[i] / errors[i + 1]) for i in range(2)]
+        check(all(abs(r - order) < 0.1 for r in rates),
+              "%s: error against the closed form %s of 2G|e|, order %s (expected %g)"
+              % (label, ", ".join("%.2e" % e for e in errors),
+                 ", ".join("%.2f" % r for r in rates), order))
+
+for case in ("relaxation", "rate"):
+    for scheme, order in (("BDF2", 2.0), ("generalized midpoint", 1.0)):
+        label = "plane stress, %s, %s" % (case, scheme)
+        errors = []
+        for h in (100.0, 50.0, 25.0):
+            out = simulate(case, scheme, 1.0, h, "plane stress")
+            rows = read_csv(os.path.join(out, "point_history.csv"))
+            worst_exact = worst_zz = 0.0
+            for r in rows:
+                exact = closed_form_plane_stress(case, r["time"], G, K, tau, e1, e2)
+                worst_exact = max(worst_exact, max(abs(a - b) for a, b in
+                                                   zip((r["s_xx"], r["s_yy"]), exact)) / scale)
+                worst_zz = max(worst_zz, abs(r["s_zz"]) / scale)
+            check(len(rows) == 2 * 5 and worst_zz < 1e-8,
+                  "%s, h = %g yr: sigma_zz = 0 (largest %.1e of 2G|e|)" % (label, h, worst_zz))
             errors.append(worst_exact)
         rates = [math.log2(errors[i] / errors[i + 1]) for i in range(2)]
         check(all(abs(r - order) < 0.1 for r in rates),
