@@ -172,6 +172,7 @@ namespace lithostress
           curved = curved || face->manifold_id() != numbers::flat_manifold_id;
       }
     faults.parse_parameters(prm, geometry->fault_traces(), length_scale);
+    faults.identify(triangulation);
     sliding_solver.parse_parameters(prm);
     if (faults.active() && degree > 2)
       throw_input_error("Discretization/Polynomial degree",
@@ -599,35 +600,50 @@ namespace lithostress
   void
   Simulator<dim>::write_fault_results(const int output_index)
   {
-    const std::vector<FaultSample> samples =
+    const std::vector<FaultSample> all =
       sample_fault(faults, dof_handler, *fe_space, solution, slip_history);
-    FaultSummary summary         = summarize_fault(samples);
-    summary.nonlinear_iterations = statistics.solver.nonlinear_iterations;
-    summary.linear_solves        = statistics.solver.linear_solves;
-    summary.tensile_failure_distance_m =
-      surface_boundary == numbers::invalid_boundary_id
-        ? std::nan("")
-        : tensile_failure_distance(faults.trace(),
-                                   summary.throw_m,
-                                   dof_handler,
-                                   *fe_space,
-                                   *stress_model,
-                                   griffith,
-                                   solution,
-                                   surface_boundary);
-    on_all_ranks(communicator, [&]() {
-      if (Utilities::MPI::this_mpi_process(communicator) == 0)
-        {
-          write_fault_csv(output_directory + "/fault.csv", samples);
-          if (output_index >= 0)
-            write_fault_csv(output_directory + "/fault-" +
-                              Utilities::int_to_string(output_index, 5) +
-                              ".csv",
-                            samples);
-          write_fault_summary(output_directory + "/fault_summary.json",
-                              summary);
-        }
-    });
+    for (unsigned int k = 0; k < faults.n_faults(); ++k)
+      {
+        if (!faults.has_face_terms(k))
+          continue;
+        std::vector<FaultSample> samples;
+        for (const FaultSample &sample : all)
+          if (sample.fault == k)
+            samples.push_back(sample);
+        FaultSummary summary         = summarize_fault(samples);
+        summary.nonlinear_iterations = statistics.solver.nonlinear_iterations;
+        summary.linear_solves        = statistics.solver.linear_solves;
+        summary.tensile_failure_distance_m =
+          surface_boundary == numbers::invalid_boundary_id
+            ? std::nan("")
+            : tensile_failure_distance(faults.trace(k),
+                                       summary.throw_m,
+                                       dof_handler,
+                                       *fe_space,
+                                       *stress_model,
+                                       griffith,
+                                       solution,
+                                       surface_boundary);
+        // fault.csv for the model's one fault, fault_<name>.csv for each of
+        // several.
+        const std::string suffix =
+          faults.n_faults() == 1 ? "" : "_" + faults.trace(k).name;
+        on_all_ranks(communicator, [&]() {
+          if (Utilities::MPI::this_mpi_process(communicator) == 0)
+            {
+              write_fault_csv(output_directory + "/fault" + suffix + ".csv",
+                              samples);
+              if (output_index >= 0)
+                write_fault_csv(output_directory + "/fault" + suffix + "-" +
+                                  Utilities::int_to_string(output_index, 5) +
+                                  ".csv",
+                                samples);
+              write_fault_summary(output_directory + "/fault_summary" + suffix +
+                                    ".json",
+                                  summary);
+            }
+        });
+      }
   }
 
   template <int dim>

@@ -110,9 +110,11 @@ namespace lithostress
     solve();
     void
     postprocess(const unsigned int cycle);
-    /** fault.csv and fault_summary.json of a model with an elastic or
-     * frictional fault (faults/fault_output.h); in the time loop also
-     * fault-NNNNN.csv of output step @p output_index. */
+    /** fault.csv and fault_summary.json of each elastic or frictional
+     * fault (faults/fault_output.h; fault_<name>.csv and
+     * fault_summary_<name>.json when the model has several faults); in the
+     * time loop also fault-NNNNN.csv (fault_<name>-NNNNN.csv) of output step
+     * @p output_index. */
     void
     write_fault_results(const int output_index = -1);
     void
@@ -178,7 +180,7 @@ namespace lithostress
     PrescribedDisplacement<dim>               prescribed_displacement;
     FaultInterface<dim>                       faults;
     FrictionalSlidingSolver<dim>              sliding_solver;
-    /** The frictional fault's accumulated slip (its history). */
+    /** The frictional faults' accumulated slip (their history). */
     FaultSlipHistory slip_history;
     /** Whether solve() leaves the slip of a frictional fault uncommitted
      * (the time loop commits it with an accepted step). */

@@ -32,7 +32,14 @@ namespace lithostress
       friction_coefficient * std::max(0.0, -r.effective_normal_stress);
     r.tangent[1][1]      = normal_stiffness;
     const double trial_s = shear_stiffness * (w_s - p_old);
-    if (r.effective_normal_stress >= 0)
+    if (!slides)
+      {
+        r.state          = SlipState::stuck;
+        r.shear_traction = trial_s;
+        r.plastic_slip   = p_old;
+        r.tangent[0][0]  = shear_stiffness;
+      }
+    else if (r.effective_normal_stress >= 0)
       {
         // In tension: no shear; the slip follows the jump.
         r.state          = SlipState::open;

@@ -9,6 +9,10 @@
 
 #include <array>
 #include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
 
 namespace lithostress
 {
@@ -114,6 +118,9 @@ namespace lithostress
     faults.clear();
     prm.enter_subsection("Faults");
     const std::vector<std::string> names = split_list(prm.get("Names"));
+    std::string                    trace_names;
+    for (const FaultTrace &trace : traces)
+      trace_names += (trace_names.empty() ? "<" : ", <") + trace.name + ">";
     for (const std::string &name : names)
       {
         bool known = false;
@@ -122,9 +129,9 @@ namespace lithostress
         if (!known)
           throw_input_error("Faults/Names",
                             "<" + name + "> is not a fault of the geometry" +
-                              (traces.empty() ? std::string(" (it has none)")
-                                              : " (its fault is <" +
-                                                  traces.front().name + ">)"));
+                              (traces.empty()
+                                 ? std::string(" (it has none)")
+                                 : " (its faults: " + trace_names + ")"));
       }
     for (const FaultTrace &trace : traces)
       {
@@ -195,6 +202,7 @@ namespace lithostress
                 f.normal_stiffness /= l;
               }
           }
+        fault.friction.slides = fault.law == Law::frictional;
         if (fault.law == Law::frictional)
           {
             CoulombFriction &f     = fault.friction;
@@ -207,9 +215,6 @@ namespace lithostress
         faults.push_back(fault);
       }
     prm.leave_subsection();
-    if (faults.size() > 1)
-      throw_input_error("Faults/Names",
-                        "one fault per model is implemented so far");
   }
 
   template <int dim>
@@ -223,16 +228,179 @@ namespace lithostress
   }
 
   template <int dim>
+  bool
+  FaultInterface<dim>::frictional() const
+  {
+    for (const Fault &fault : faults)
+      if (fault.law == Law::frictional)
+        return true;
+    return false;
+  }
+
+  template <int dim>
+  std::string
+  FaultInterface<dim>::frictional_names() const
+  {
+    std::string  names;
+    unsigned int n = 0;
+    for (const Fault &fault : faults)
+      if (fault.law == Law::frictional)
+        {
+          names += (n++ == 0 ? "<" : ", <") + fault.trace.name + ">";
+        }
+    return (n > 1 ? "faults " : "fault ") + names;
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::identify(const Triangulation<dim> &triangulation)
+  {
+    const unsigned int n_coarse = triangulation.n_cells(0);
+    coarse_field.assign(n_coarse, 0);
+    coarse_face_fault.assign(n_coarse, {});
+    for (auto &faces : coarse_face_fault)
+      faces.fill(-1);
+    if (faults.empty())
+      return;
+    double size = 0;
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      size = std::max(size, cell->diameter());
+    const double tolerance = 1e-8 * size;
+
+    // The faces on each fault: both vertices and the midpoint (on the
+    // face's manifold) on the trace.
+    std::vector<unsigned int>                      faces_on(faults.size(), 0);
+    std::map<unsigned int, std::set<unsigned int>> faults_at_vertex;
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int f : cell->face_indices())
+        {
+          if (cell->at_boundary(f))
+            continue;
+          const auto face = cell->face(f);
+          for (unsigned int k = 0; k < faults.size(); ++k)
+            {
+              const FaultTrace &trace = faults[k].trace;
+              if (trace.distance_to(face->vertex(0)) > tolerance ||
+                  trace.distance_to(face->vertex(1)) > tolerance ||
+                  trace.distance_to(face->center(true)) > tolerance)
+                continue;
+              int &entry = coarse_face_fault[cell->index()][f];
+              if (entry >= 0 && entry != static_cast<int>(k))
+                throw_input_error("Faults/Names",
+                                  "the faults <" + faults[entry].trace.name +
+                                    "> and <" + trace.name +
+                                    "> run along the same cell faces");
+              entry = k;
+              ++faces_on[k];
+              for (const unsigned int v : face->vertex_indices())
+                faults_at_vertex[face->vertex_index(v)].insert(k);
+            }
+        }
+    for (unsigned int k = 0; k < faults.size(); ++k)
+      if (faces_on[k] == 0)
+        throw_input_error("Faults/Names",
+                          "no cell faces of the mesh lie on the fault <" +
+                            faults[k].trace.name + ">");
+
+    // Faults may share a vertex only on the boundary.
+    std::set<unsigned int> boundary_vertices;
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int f : cell->face_indices())
+        if (cell->at_boundary(f))
+          for (const unsigned int v : cell->face(f)->vertex_indices())
+            boundary_vertices.insert(cell->face(f)->vertex_index(v));
+    const auto &vertices = triangulation.get_vertices();
+    for (const auto &[vertex, on] : faults_at_vertex)
+      if (on.size() > 1 && boundary_vertices.count(vertex) == 0)
+        {
+          std::ostringstream where;
+          where << "the faults <" << faults[*on.begin()].trace.name << "> and <"
+                << faults[*std::next(on.begin())].trace.name
+                << "> meet or cross inside the body, at (" << vertices[vertex]
+                << ") m";
+          throw_input_error("Faults/Names", where.str());
+        }
+
+    // Blocks: the coarse cells connected across faces that are no fault's.
+    std::vector<unsigned int> block(n_coarse);
+    std::iota(block.begin(), block.end(), 0u);
+    const std::function<unsigned int(unsigned int)> root = [&](unsigned int c) {
+      while (block[c] != c)
+        c = block[c] = block[block[c]];
+      return c;
+    };
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int f : cell->face_indices())
+        if (!cell->at_boundary(f) && coarse_face_fault[cell->index()][f] < 0)
+          block[root(cell->index())] = root(cell->neighbor(f)->index());
+    // Each fault must separate two blocks; neighbouring blocks get
+    // different fields (breadth first over the blocks).
+    std::map<unsigned int, std::vector<std::pair<unsigned int, int>>> across;
+    for (const auto &cell : triangulation.cell_iterators_on_level(0))
+      for (const unsigned int f : cell->face_indices())
+        {
+          const int k =
+            cell->at_boundary(f) ? -1 : coarse_face_fault[cell->index()][f];
+          if (k < 0)
+            continue;
+          const unsigned int a = root(cell->index()),
+                             b = root(cell->neighbor(f)->index());
+          if (a == b)
+            throw_input_error(
+              "Faults/Names",
+              "the fault <" + faults[k].trace.name +
+                "> does not split the body: its two sides are connected "
+                "around an end inside the body (a fault must run from "
+                "boundary to boundary)");
+          across[a].emplace_back(b, k);
+        }
+    std::map<unsigned int, unsigned char> field_of_block;
+    for (unsigned int c = 0; c < n_coarse; ++c)
+      {
+        const unsigned int start = root(c);
+        if (field_of_block.count(start) != 0)
+          continue;
+        field_of_block[start]           = 0;
+        std::vector<unsigned int> queue = {start};
+        while (!queue.empty())
+          {
+            const unsigned int b = queue.back();
+            queue.pop_back();
+            for (const auto &[next, k] : across[b])
+              {
+                const unsigned char want = 1 - field_of_block[b];
+                const auto          it   = field_of_block.find(next);
+                if (it == field_of_block.end())
+                  {
+                    field_of_block[next] = want;
+                    queue.push_back(next);
+                  }
+                else if (it->second != want)
+                  throw_input_error(
+                    "Faults/Names",
+                    "the faults split the body into blocks that two "
+                    "displacement fields cannot tell apart (an odd ring of "
+                    "blocks around the fault <" +
+                      faults[k].trace.name + ">)");
+              }
+          }
+      }
+    for (unsigned int c = 0; c < n_coarse; ++c)
+      coarse_field[c] = field_of_block[root(c)];
+  }
+
+  template <int dim>
   void
   FaultInterface<dim>::for_each_face_pair(
     const DoFHandler<dim> &dof_handler,
     const std::function<
-      void(const typename DoFHandler<dim>::active_cell_iterator &minus,
+      void(const unsigned int                                    fault,
+           const typename DoFHandler<dim>::active_cell_iterator &minus,
            const unsigned int                                    minus_face,
            const unsigned int                                    minus_subface,
            const typename DoFHandler<dim>::active_cell_iterator &plus,
            const unsigned int                                    plus_face,
-           const unsigned int plus_subface)> &pair) const
+           const unsigned int plus_subface)> &pair_of_fault) const
   {
     const unsigned int none = numbers::invalid_unsigned_int;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -243,6 +411,12 @@ namespace lithostress
           {
             if (cell->at_boundary(f))
               continue;
+            const int k = fault_of(cell, f);
+            if (k < 0 || !has_face_terms(k))
+              continue;
+            const auto pair = [&](const auto &...arguments) {
+              pair_of_fault(k, arguments...);
+            };
             const auto neighbor = cell->neighbor(f);
             if (neighbor->has_children())
               {
@@ -286,7 +460,8 @@ namespace lithostress
   {
     std::vector<std::vector<types::global_dof_index>> cliques;
     for_each_face_pair(dof_handler,
-                       [&](const auto &minus,
+                       [&](const unsigned int,
+                           const auto &minus,
                            const unsigned int,
                            const unsigned int,
                            const auto &plus,
@@ -348,9 +523,9 @@ namespace lithostress
                                 TrilinosWrappers::SparseMatrix  *matrix,
                                 TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    if (faults.empty() || faults.front().law != Law::elastic)
+    // With a frictional fault the sliding solver adds every face term.
+    if (!has_face_terms() || frictional())
       return;
-    const CoulombFriction &law = faults.front().friction;
     assemble_interface(
       dof_handler,
       fe_space,
@@ -361,6 +536,7 @@ namespace lithostress
           const Tensor<1, dim> &jump,
           Tensor<1, dim>       &traction,
           Tensor<2, dim>       &tangent) {
+        const CoulombFriction &law = faults[point.fault].friction;
         tangent =
           law.shear_stiffness * outer_product(point.shear, point.shear) +
           law.normal_stiffness * outer_product(point.normal, point.normal);
@@ -385,8 +561,7 @@ namespace lithostress
   {
     if (!has_face_terms())
       return;
-    const FaultTrace &trace      = faults.front().trace;
-    const auto       &collection = fe_space.fe_collection();
+    const auto &collection = fe_space.fe_collection();
     // Gauss-Lobatto points (the face's nodes for Q2: Simpson's rule): a stiff
     // interface integrated at Gauss points gives tractions that oscillate
     // from point to point near a kink or a change of state (the known
@@ -427,7 +602,8 @@ namespace lithostress
 
     for_each_face_pair(
       dof_handler,
-      [&](const auto        &minus,
+      [&](const unsigned int fault,
+          const auto        &minus,
           const unsigned int minus_face_no,
           const unsigned int minus_subface_no,
           const auto        &plus,
@@ -481,7 +657,9 @@ namespace lithostress
             Assert(m->quadrature_point(q).distance(p->quadrature_point(qp)) <=
                      1e-2 * minus->diameter(),
                    ExcMessage("the two sides of a fault face do not match"));
-            InterfacePoint point;
+            const FaultTrace &trace = faults[fault].trace;
+            InterfacePoint    point;
+            point.fault    = fault;
             point.position = m->quadrature_point(q);
             point.JxW      = m->JxW(q);
             // The fault's exact normal (into the hanging wall) rather than
@@ -489,21 +667,19 @@ namespace lithostress
             // fault then project the same jump the same way (their mapped
             // normals differ by O(h^2) there, which the stiff normal
             // spring would turn into spurious tractions).
-            {
-              const Tensor<1, 2> d = trace.down_dip(m->quadrature_point(q));
-              point.normal[0]      = -d[1];
-              point.normal[1]      = d[0];
-              if (point.normal * m->normal_vector(q) < 0)
-                point.normal = -point.normal;
-            }
+            point.normal   = trace.hanging_wall_normal(point.position);
             point.shear[0] = point.normal[1];
             point.shear[1] = -point.normal[0];
             point.depth    = trace.depth(point.position);
             point.distance = trace.distance_along(point.position);
+            // w = u(hanging wall) - u(footwall): the field-1 side is the
+            // hanging wall where field 0's outward normal points into it.
+            const double sign =
+              point.normal * m->normal_vector(q) > 0 ? 1. : -1.;
             for (unsigned int i = 0; i < n_minus; ++i)
-              jump[i] = -(*m)[u_minus].value(i, q);
+              jump[i] = -sign * (*m)[u_minus].value(i, q);
             for (unsigned int i = 0; i < n_plus; ++i)
-              jump[n_minus + i] = (*p)[u_plus].value(i, qp);
+              jump[n_minus + i] = sign * (*p)[u_plus].value(i, qp);
             Tensor<1, dim> w;
             for (unsigned int i = 0; i < n; ++i)
               w += values[i] * jump[i];
@@ -551,11 +727,11 @@ namespace lithostress
   {
     if (faults.empty())
       return;
-    const FaultTrace &trace = faults.front().trace;
+    Assert(coarse_field.size() == dof_handler.get_triangulation().n_cells(0),
+           ExcMessage("call identify() on this mesh first"));
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
-        cell->set_active_fe_index(trace.in_hanging_wall(cell->center()) ? 1
-                                                                        : 0);
+        cell->set_active_fe_index(coarse_field[coarse_index(cell)]);
   }
 
   namespace
@@ -605,13 +781,17 @@ namespace lithostress
                                        AffineConstraints<double> &constraints,
                                        const double               time) const
   {
-    if (faults.empty() || (faults.front().law != Law::locked &&
-                           faults.front().law != Law::prescribed_slip))
+    bool with_constraints = false;
+    for (const Fault &fault : faults)
+      with_constraints = with_constraints || fault.law == Law::locked ||
+                         fault.law == Law::prescribed_slip;
+    if (!with_constraints)
       return;
-    const Fault &fault = faults.front();
-    // The prescribed jump's component d at a node of a fault face (zero
-    // for a locked fault).
-    const auto jump = [&](const Point<dim>     &x,
+    // The prescribed jump u(hanging wall) - u(footwall) of fault @p fault,
+    // component d, at a node x of one of its faces whose normal into the
+    // hanging wall is n (zero for a locked fault).
+    const auto jump = [&](const Fault          &fault,
+                          const Point<dim>     &x,
                           const Tensor<1, dim> &normal,
                           const unsigned int    d) {
       if (fault.law != Law::prescribed_slip)
@@ -623,8 +803,7 @@ namespace lithostress
              fault.opening->value(s) * normal[d];
     };
     // The nodes of a face in the order of the scalar element's face DoFs:
-    // the vertices, then (Q2) the midpoint on the face's manifold; and the
-    // face's normal out of the footwall.
+    // the vertices, then (Q2) the midpoint on the face's manifold.
     const auto node_positions = [&](const auto &face) {
       std::vector<Point<dim>> x;
       for (const unsigned int v : face->vertex_indices())
@@ -633,16 +812,21 @@ namespace lithostress
         x.push_back(face->center(true));
       return x;
     };
-    const auto footwall_normal = [&](const Point<dim> &a, const Point<dim> &b) {
-      Tensor<1, dim> t = b - a, n;
-      n[0]             = t[1];
-      n[1]             = -t[0];
-      n /= n.norm();
-      // Into the hanging wall.
-      const Point<dim> mid = a + 0.5 * (b - a);
-      if (!fault.trace.in_hanging_wall(mid + 1e-6 * (b - a).norm() * n))
-        n = -n;
-      return n;
+    // +1 if the field-1 side of face f of @p cell is the fault's hanging
+    // wall, -1 if it is the footwall.
+    const auto field_1_sign = [&](const auto        &cell,
+                                  const unsigned int f,
+                                  const FaultTrace  &trace) {
+      const auto         face = cell->face(f);
+      const Tensor<1, 2> t    = face->vertex(1) - face->vertex(0);
+      Tensor<1, dim>     out;
+      out[0] = t[1];
+      out[1] = -t[0];
+      if (out * (face->center() - cell->center()) < 0)
+        out = -out;
+      if (cell->active_fe_index() == 1)
+        out = -out;
+      return trace.hanging_wall_normal(face->center(true)) * out > 0 ? 1. : -1.;
     };
     const auto        &collection = fe_space.fe_collection();
     const FE_Q<dim>    scalar(fe_space.degree());
@@ -691,6 +875,19 @@ namespace lithostress
             if (neighbor->has_children() || neighbor->is_artificial() ||
                 neighbor->active_fe_index() == side)
               continue;
+            const int k = fault_of(cell, f);
+            if (k < 0 || (faults[k].law != Law::locked &&
+                          faults[k].law != Law::prescribed_slip))
+              continue;
+            const Fault &fault = faults[k];
+            // The jump of the fields, u(field 1) - u(field 0).
+            const double sign = field_1_sign(cell, f, fault.trace);
+            const auto   n =
+              fault.trace.hanging_wall_normal(cell->face(f)->center(true));
+            const auto field_jump = [&](const Point<dim>  &x,
+                                        const unsigned int d) {
+              return sign * jump(fault, x, n, d);
+            };
             if (!cell->neighbor_is_coarser(f))
               {
                 // Equal levels, seen from the footwall: hanging wall :=
@@ -700,12 +897,11 @@ namespace lithostress
                 cell->face(f)->get_dof_indices(dofs_0, 0);
                 cell->face(f)->get_dof_indices(dofs_1, 1);
                 const auto x = node_positions(cell->face(f));
-                const auto n = footwall_normal(x[0], x[1]);
                 for (unsigned int d = 0; d < dim; ++d)
-                  for (unsigned int k = 0; k < n_nodes; ++k)
-                    constrain(dofs_1[table[1][d][k]],
-                              {{dofs_0[table[0][d][k]], 1.0}},
-                              jump(x[k], n, d));
+                  for (unsigned int j = 0; j < n_nodes; ++j)
+                    constrain(dofs_1[table[1][d][j]],
+                              {{dofs_0[table[0][d][j]], 1.0}},
+                              field_jump(x[j], d));
                 continue;
               }
             // This cell is the finer side of a hanging fault face.
@@ -714,7 +910,6 @@ namespace lithostress
             const auto coarse_face      = neighbor->face(coarse_face_no);
             const FullMatrix<double> &m = subface[subface_no];
             const auto                x = node_positions(cell->face(f));
-            const auto                n = footwall_normal(x[0], x[1]);
             if (side == 1)
               {
                 // Fine hanging wall: every node := the footwall's coarse
@@ -731,7 +926,7 @@ namespace lithostress
                           entries.emplace_back(dofs_0[table[0][d][i]], m(j, i));
                       constrain(dofs_1[table[1][d][j]],
                                 entries,
-                                jump(x[j], n, d));
+                                field_jump(x[j], d));
                     }
               }
             else
@@ -748,7 +943,7 @@ namespace lithostress
                       if (unit_row(m, j, i))
                         constrain(dofs_1[table[1][d][i]],
                                   {{dofs_0[table[0][d][j]], 1.0}},
-                                  jump(x[j], n, d));
+                                  field_jump(x[j], d));
                       else
                         {
                           std::vector<
@@ -760,7 +955,7 @@ namespace lithostress
                                                    m(j, c));
                           constrain(dofs_0[table[0][d][j]],
                                     entries,
-                                    -jump(x[j], n, d));
+                                    -field_jump(x[j], d));
                         }
                     }
               }

@@ -20,9 +20,7 @@ namespace lithostress
                const TrilinosWrappers::MPI::Vector &solution,
                const FaultSlipHistory              &history)
   {
-    using InterfacePoint         = typename FaultInterface<dim>::InterfacePoint;
-    const CoulombFriction   &law = faults.friction();
-    const bool               frictional = faults.frictional();
+    using InterfacePoint = typename FaultInterface<dim>::InterfacePoint;
     std::vector<FaultSample> samples;
     faults.assemble_interface(
       dof_handler,
@@ -34,8 +32,11 @@ namespace lithostress
           const Tensor<1, dim> &w,
           Tensor<1, dim> &,
           Tensor<2, dim> &) {
-        const Tensor<1, 2> down = faults.trace().down_dip(p.position);
+        const CoulombFriction &law        = faults.friction(p.fault);
+        const bool             frictional = law.slides;
+        const Tensor<1, 2> down = faults.trace(p.fault).down_dip(p.position);
         FaultSample        sample;
+        sample.fault         = p.fault;
         sample.s             = p.distance;
         sample.x             = p.position[0];
         sample.y             = p.position[1];
@@ -74,7 +75,9 @@ namespace lithostress
     std::sort(samples.begin(),
               samples.end(),
               [](const FaultSample &a, const FaultSample &b) {
-                return a.s < b.s || (a.s == b.s && a.x < b.x);
+                return a.fault < b.fault ||
+                       (a.fault == b.fault &&
+                        (a.s < b.s || (a.s == b.s && a.x < b.x)));
               });
     return samples;
   }

@@ -9,12 +9,15 @@ namespace lithostress
   {
     std::vector<Record> mine;
     for (unsigned int i = 0; i < slip.size() && i < distances.size(); ++i)
-      mine.push_back({{distances[i], slip[i], static_cast<double>(states[i])}});
+      mine.push_back({{distances[i],
+                       slip[i],
+                       static_cast<double>(states[i]),
+                       static_cast<double>(faults[i])}});
     std::vector<Record> all;
     for (const auto &part : Utilities::MPI::all_gather(communicator, mine))
       all.insert(all.end(), part.begin(), part.end());
     std::sort(all.begin(), all.end(), [](const Record &a, const Record &b) {
-      return a[0] < b[0];
+      return a[3] < b[3] || (a[3] == b[3] && a[0] < b[0]);
     });
     return all;
   }
@@ -27,9 +30,10 @@ namespace lithostress
   }
 
   void
-  FaultSlipHistory::reinit(const std::vector<double> &new_distances,
-                           const unsigned long long   mesh_version,
-                           const MPI_Comm             communicator)
+  FaultSlipHistory::reinit(const std::vector<unsigned int> &new_faults,
+                           const std::vector<double>       &new_distances,
+                           const unsigned long long         mesh_version,
+                           const MPI_Comm                   communicator)
   {
     if (mesh == mesh_version && slip.size() == new_distances.size())
       return;
@@ -37,25 +41,36 @@ namespace lithostress
       restored.empty() ? gather(communicator) : restored;
     restored.clear();
     mesh                 = mesh_version;
+    faults               = new_faults;
     distances            = new_distances;
     const unsigned int n = distances.size();
     slip.assign(n, 0.0);
     states.assign(n, SlipState::stuck);
-    for (unsigned int i = 0; i < n && !old.empty(); ++i)
+    for (unsigned int i = 0; i < n; ++i)
       {
-        const double s = distances[i];
-        // The first old point at or beyond s.
-        const auto next = std::lower_bound(old.begin(),
-                                           old.end(),
-                                           s,
-                                           [](const Record &r, const double x) {
-                                             return r[0] < x;
-                                           });
-        if (next == old.begin() || next == old.end())
+        // The old points of this fault, then the first at or beyond s.
+        const double fault = faults[i], s = distances[i];
+        const auto   begin = std::lower_bound(
+          old.begin(), old.end(), fault, [](const Record &r, const double f) {
+            return r[3] < f;
+          });
+        const auto end = std::upper_bound(begin,
+                                          old.end(),
+                                          fault,
+                                          [](const double f, const Record &r) {
+                                            return f < r[3];
+                                          });
+        if (begin == end)
+          continue;
+        const auto next =
+          std::lower_bound(begin, end, s, [](const Record &r, const double x) {
+            return r[0] < x;
+          });
+        if (next == begin || next == end)
           {
-            const Record &end = next == old.end() ? old.back() : old.front();
-            slip[i]           = end[1];
-            states[i]         = static_cast<SlipState>(end[2]);
+            const Record &last = next == end ? *(end - 1) : *begin;
+            slip[i]            = last[1];
+            states[i]          = static_cast<SlipState>(last[2]);
             continue;
           }
         const Record &a = *(next - 1), &b = *next;

@@ -127,20 +127,26 @@ namespace lithostress
     const FiniteElementSpace<dim>   &fe_space    = problem.fe_space;
     const LinearSystem<dim>         &system      = problem.system;
     const AffineConstraints<double> &constraints = system.constraints;
-    const MPI_Comm         communicator = dof_handler.get_communicator();
-    const CoulombFriction &law          = faults.friction();
-    const bool             newton       = parameters.method == Method::newton;
-    report                              = SolverReport();
-    report.solver                       = newton ? "newton" : "thesis";
-    report.linear_solves                = 0;
+    const MPI_Comm communicator = dof_handler.get_communicator();
+    const bool     newton       = parameters.method == Method::newton;
+    report                      = SolverReport();
+    report.solver               = newton ? "newton" : "thesis";
+    report.linear_solves        = 0;
     Timer timer(communicator, true);
 
-    std::vector<double> distances;
+    std::vector<double>       distances;
+    std::vector<unsigned int> fault_of_point;
     for (const InterfacePoint &p :
          faults.interface_quadrature(dof_handler, fe_space))
-      distances.push_back(p.distance);
+      {
+        distances.push_back(p.distance);
+        fault_of_point.push_back(p.fault);
+      }
     const unsigned int n_points = distances.size();
-    history.reinit(distances, problem.operator_version >> 32, communicator);
+    history.reinit(fault_of_point,
+                   distances,
+                   problem.operator_version >> 32,
+                   communicator);
     // The law each solve linearised (t = D w + c per point) and the return
     // mapping's response at the last evaluated iterate.
     std::vector<Tensor<2, dim>>            tangents(n_points);
@@ -151,11 +157,12 @@ namespace lithostress
     std::vector<bool>   slid(n_points, false);
 
     const auto stuck_law = [&](const std::vector<double> &slip) {
-      return [&law, &slip, &tangents, &affine](const unsigned int    i,
-                                               const InterfacePoint &p,
-                                               const Tensor<1, dim> &w,
-                                               Tensor<1, dim>       &t,
-                                               Tensor<2, dim>       &D) {
+      return [&faults, &slip, &tangents, &affine](const unsigned int    i,
+                                                  const InterfacePoint &p,
+                                                  const Tensor<1, dim> &w,
+                                                  Tensor<1, dim>       &t,
+                                                  Tensor<2, dim>       &D) {
+        const CoulombFriction &law = faults.friction(p.fault);
         D = law.shear_stiffness * outer_product(p.shear, p.shear) +
             law.normal_stiffness * outer_product(p.normal, p.normal);
         t           = D * w - law.shear_stiffness * slip[i] * p.shear;
@@ -168,9 +175,11 @@ namespace lithostress
                                     const Tensor<1, dim> &w,
                                     Tensor<1, dim>       &t,
                                     Tensor<2, dim>       &D) {
-      responses[i] =
-        law.respond(w * p.shear, w * p.normal, history.slip[i], p.depth);
-      t = responses[i].shear_traction * p.shear +
+      responses[i] = faults.friction(p.fault).respond(w * p.shear,
+                                                      w * p.normal,
+                                                      history.slip[i],
+                                                      p.depth);
+      t            = responses[i].shear_traction * p.shear +
           responses[i].normal_traction * p.normal;
       D = from_local_frame<dim>(responses[i].tangent, p.shear, p.normal);
     };
@@ -343,9 +352,9 @@ namespace lithostress
             r_norm = trial_norm;
             if (!std::isfinite(r_norm))
               throw ComputationError(
-                "the Newton iteration for the sliding on fault <" +
-                faults.trace().name +
-                "> produced a residual that is not "
+                "the Newton iteration for the sliding on " +
+                faults.frictional_names() +
+                " produced a residual that is not "
                 "finite in iteration " +
                 std::to_string(iteration));
             std::ostringstream line;
@@ -396,8 +405,9 @@ namespace lithostress
                   Tensor<1, dim> &,
                   Tensor<2, dim> &) {
                 // The excess over the limit at the elastic traction.
-                CoulombFriction::Response &r = responses[i];
-                r                            = law.respond(w * p.shear,
+                const CoulombFriction     &law = faults.friction(p.fault);
+                CoulombFriction::Response &r   = responses[i];
+                r                              = law.respond(w * p.shear,
                                 w * p.normal,
                                 thesis_slip[i],
                                 p.depth);
@@ -429,8 +439,9 @@ namespace lithostress
               {
                 std::ostringstream what;
                 what << std::setprecision(3)
-                     << "the thesis iteration for the sliding on fault <"
-                     << faults.trace().name << "> diverges: the excess shear "
+                     << "the thesis iteration for the sliding on "
+                     << faults.frictional_names()
+                     << " diverges: the excess shear "
                      << "grew from " << first_excess << " Pa to " << excess
                      << " Pa in " << iteration
                      << " iterations; lower Faults/Sliding solver/Convergence "
@@ -472,8 +483,8 @@ namespace lithostress
     if (!converged)
       {
         std::ostringstream what;
-        what << std::setprecision(3) << "the frictional sliding on fault <"
-             << faults.trace().name << "> did not converge in "
+        what << std::setprecision(3) << "the frictional sliding on "
+             << faults.frictional_names() << " did not converge in "
              << parameters.max_iterations << " " << report.solver
              << " iterations (residual " << r_norm / f
              << " of the load, excess "

@@ -6,6 +6,7 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/geometry/gmsh_mesh.h>
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -27,6 +28,18 @@ namespace lithostress
                       Patterns::Anything(),
                       "Boundary parts that are circular arcs, with their "
                       "centres: `name: x, y; name2: x, y` [length unit].");
+    prm.declare_entry("Fault curves",
+                      "",
+                      Patterns::Anything(),
+                      "Physical curves of the mesh that are faults (interior "
+                      "lines from boundary to boundary; MSH format 2): each "
+                      "becomes a fault of that name, with its interface law "
+                      "in `Faults`.");
+    prm.declare_entry("Fault arc centres",
+                      "",
+                      Patterns::Anything(),
+                      "Fault curves that are circular arcs, with their "
+                      "centres: `name: x, y; name2: x, y` [length unit].");
     prm.leave_subsection();
   }
 
@@ -36,8 +49,11 @@ namespace lithostress
   {
     scale = s;
     prm.enter_subsection("Gmsh");
-    mesh_file              = prm.get("Mesh file");
-    const std::string text = prm.get("Circular arcs");
+    mesh_file                           = prm.get("Mesh file");
+    const std::string              text = prm.get("Circular arcs");
+    const std::vector<std::string> fault_names =
+      split_list(prm.get("Fault curves"));
+    const std::string fault_arcs = prm.get("Fault arc centres");
     prm.leave_subsection();
     if (mesh_file.empty())
       throw_input_error("Geometry/Gmsh/Mesh file", "is empty");
@@ -61,6 +77,210 @@ namespace lithostress
                                                   scale);
         arcs.emplace_back(name, centre[0]);
       }
+
+    faults.clear();
+    fault_tags.clear();
+    for (const std::string &name : fault_names)
+      {
+        if (boundary_names.count(name) == 0)
+          throw_input_error("Geometry/Gmsh/Fault curves",
+                            "the mesh has no physical curve <" + name + ">");
+        FaultTrace trace;
+        trace.name = name;
+        faults.push_back(trace);
+        fault_tags.insert(boundary_names.at(name));
+      }
+    std::map<std::string, Point<dim>> centres;
+    for (const std::string &item : split_list(fault_arcs, ';'))
+      {
+        const auto colon = item.find(':');
+        if (colon == std::string::npos)
+          throw_input_error("Geometry/Gmsh/Fault arc centres",
+                            "<" + item + "> is not of the form name: x, y");
+        const std::string name = Utilities::trim(item.substr(0, colon));
+        if (std::find(fault_names.begin(), fault_names.end(), name) ==
+            fault_names.end())
+          throw_input_error("Geometry/Gmsh/Fault arc centres",
+                            "<" + name + "> is not one of the Fault curves");
+        centres[name] = parse_point_list<dim>(item.substr(colon + 1),
+                                              "Geometry/Gmsh/Fault arc centres",
+                                              scale)[0];
+      }
+    if (!faults.empty())
+      read_fault_curves(centres);
+  }
+
+  template <int dim>
+  void
+  GmshMesh<dim>::read_fault_curves(
+    const std::map<std::string, Point<dim>> &centres)
+  {
+    const std::string        entry = "Geometry/Gmsh/Fault curves";
+    std::ifstream            in(mesh_file);
+    std::string              line;
+    std::map<long, Point<2>> nodes;
+    std::map<int, std::vector<std::pair<long, long>>> lines;
+    double                                            version = 0;
+    while (std::getline(in, line))
+      {
+        line = Utilities::trim(line);
+        if (line == "$MeshFormat")
+          in >> version;
+        else if (line == "$Nodes")
+          {
+            if (version >= 3)
+              throw_input_error(entry,
+                                "fault curves need a mesh file in MSH format "
+                                "2 (<" +
+                                  mesh_file +
+                                  "> is format 4: export it with gmsh "
+                                  "-format msh22)");
+            long n = 0;
+            in >> n;
+            for (long i = 0; i < n; ++i)
+              {
+                long   id = 0;
+                double x = 0, y = 0, z = 0;
+                in >> id >> x >> y >> z;
+                nodes[id] = Point<2>(x * scale, y * scale);
+              }
+          }
+        else if (line == "$Elements")
+          {
+            long n = 0;
+            in >> n;
+            std::getline(in, line);
+            for (long i = 0; i < n && std::getline(in, line); ++i)
+              {
+                std::istringstream element(line);
+                long               id   = 0;
+                int                type = 0, n_tags = 0, tag = 0;
+                element >> id >> type >> n_tags;
+                std::vector<int> tags(n_tags);
+                for (int &t : tags)
+                  element >> t;
+                if (n_tags > 0)
+                  tag = tags[0];
+                if (fault_tags.count(tag) == 0)
+                  continue;
+                if (type != 1)
+                  throw_input_error(entry,
+                                    "the fault curves must be 2-node lines "
+                                    "(Gmsh element type 1), element " +
+                                      std::to_string(id) + " has type " +
+                                      std::to_string(type));
+                long a = 0, b = 0;
+                element >> a >> b;
+                lines[tag].emplace_back(a, b);
+              }
+          }
+      }
+    for (FaultTrace &fault : faults)
+      {
+        const auto       &segments = lines[boundary_names.at(fault.name)];
+        const std::string what     = "the physical curve <" + fault.name + ">";
+        if (segments.empty())
+          throw_input_error(entry, what + " has no line elements");
+        // Chain the segments: a single unbranched line from end to end.
+        std::map<long, std::vector<long>> next;
+        for (const auto &[a, b] : segments)
+          {
+            if (nodes.count(a) == 0 || nodes.count(b) == 0)
+              throw_input_error(entry, what + " refers to a missing node");
+            next[a].push_back(b);
+            next[b].push_back(a);
+          }
+        std::vector<long> ends;
+        for (const auto &[node, neighbours] : next)
+          {
+            if (neighbours.size() > 2)
+              throw_input_error(entry, what + " branches at a node");
+            if (neighbours.size() == 1)
+              ends.push_back(node);
+          }
+        if (ends.size() != 2)
+          throw_input_error(entry,
+                            what + " is not one open line (it is closed or "
+                                   "in pieces)");
+        // From the upper end (the left one if level) down.
+        const auto upper = [&](const long a, const long b) {
+          const Point<2> &p = nodes[a], &q = nodes[b];
+          return p[1] > q[1] || (p[1] == q[1] && p[0] < q[0]);
+        };
+        long node     = upper(ends[0], ends[1]) ? ends[0] : ends[1];
+        long previous = -1;
+        std::vector<Point<2>> vertices = {nodes[node]};
+        while (true)
+          {
+            long following = -1;
+            for (const long n : next[node])
+              if (n != previous)
+                following = n;
+            if (following < 0)
+              break;
+            previous = node;
+            node     = following;
+            vertices.push_back(nodes[node]);
+          }
+        if (vertices.size() != segments.size() + 1)
+          throw_input_error(entry,
+                            what + " is not one open line (it is in pieces)");
+        const auto centre = centres.find(fault.name);
+        Point<2>   c;
+        if (centre != centres.end())
+          {
+            c               = Point<2>(centre->second[0], centre->second[1]);
+            const double r0 = vertices.front().distance(c);
+            for (const Point<2> &v : vertices)
+              if (std::abs(v.distance(c) - r0) > 1e-6 * r0)
+                throw_input_error("Geometry/Gmsh/Fault arc centres",
+                                  "the vertices of <" + fault.name +
+                                    "> are not on one circle about this "
+                                    "centre");
+          }
+        fault.set_polyline(vertices, centre != centres.end(), c);
+      }
+  }
+
+  template <int dim>
+  std::string
+  GmshMesh<dim>::text_without_fault_lines() const
+  {
+    std::ifstream      in(mesh_file);
+    std::ostringstream out;
+    std::string        line;
+    while (std::getline(in, line))
+      {
+        out << line << '\n';
+        if (Utilities::trim(line) != "$Elements")
+          continue;
+        long n = 0;
+        std::getline(in, line);
+        n = std::stol(line);
+        std::vector<std::string> kept;
+        for (long i = 0; i < n && std::getline(in, line); ++i)
+          {
+            std::istringstream element(line);
+            long               id   = 0;
+            int                type = 0, n_tags = 0, tag = -1;
+            element >> id >> type >> n_tags;
+            if (n_tags > 0)
+              element >> tag;
+            if (!(type == 1 && fault_tags.count(tag) != 0))
+              kept.push_back(line);
+          }
+        out << kept.size() << '\n';
+        for (const std::string &k : kept)
+          out << k << '\n';
+      }
+    return out.str();
+  }
+
+  template <int dim>
+  std::vector<FaultTrace>
+  GmshMesh<dim>::fault_traces() const
+  {
+    return faults;
   }
 
   template <int dim>
@@ -136,7 +356,11 @@ namespace lithostress
                             open_sections.back() + " (the file ends at line " +
                             std::to_string(number) + ")");
     }
-    std::ifstream in(mesh_file);
+    std::ifstream      file(mesh_file);
+    std::istringstream filtered(faults.empty() ? std::string()
+                                               : text_without_fault_lines());
+    std::istream      &in =
+      faults.empty() ? static_cast<std::istream &>(file) : filtered;
     try
       {
         grid_in.read_msh(in);
@@ -176,18 +400,59 @@ namespace lithostress
               }
         tria.set_manifold(arc_id, PolarManifold<dim>(arcs[k].second));
       }
+    // A curved fault's faces get a polar manifold, id 2(n + j) + 1 for
+    // fault j after n boundary arcs, their cells 2(n + j) + 2.
+    for (unsigned int j = 0; j < faults.size(); ++j)
+      {
+        const FaultTrace &fault = faults[j];
+        if (!fault.has_arc)
+          continue;
+        const types::manifold_id arc_id    = 2 * (arcs.size() + j) + 1;
+        const types::manifold_id cell_id   = arc_id + 1;
+        const double             tolerance = 1e-9 * fault.arc_radius;
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (!face->at_boundary() &&
+                fault.distance_to(Point<2>(face->vertex(0)[0],
+                                           face->vertex(0)[1])) < tolerance &&
+                fault.distance_to(
+                  Point<2>(face->vertex(1)[0], face->vertex(1)[1])) < tolerance)
+              {
+                cell->set_manifold_id(cell_id);
+                for (const auto &f : cell->face_iterators())
+                  if (f->manifold_id() == numbers::flat_manifold_id)
+                    f->set_manifold_id(cell_id);
+                face->set_manifold_id(arc_id);
+              }
+        Point<dim> centre;
+        centre[0] = fault.arc_centre[0];
+        centre[1] = fault.arc_centre[1];
+        tria.set_manifold(arc_id, PolarManifold<dim>(centre));
+      }
     for (unsigned int k = 0; k < arcs.size(); ++k)
       {
         transfinite[k].initialize(tria);
         tria.set_manifold(2 * k + 2, transfinite[k]);
       }
+    std::vector<TransfiniteInterpolationManifold<dim>> fault_transfinite(
+      faults.size());
+    for (unsigned int j = 0; j < faults.size(); ++j)
+      if (faults[j].has_arc)
+        {
+          fault_transfinite[j].initialize(tria);
+          tria.set_manifold(2 * (arcs.size() + j) + 2, fault_transfinite[j]);
+        }
   }
 
   template <int dim>
   std::map<std::string, types::boundary_id>
   GmshMesh<dim>::boundary_parts() const
   {
-    return boundary_names;
+    std::map<std::string, types::boundary_id> parts;
+    for (const auto &[name, id] : boundary_names)
+      if (fault_tags.count(id) == 0)
+        parts[name] = id;
+    return parts;
   }
 
   template <int dim>

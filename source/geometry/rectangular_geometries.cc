@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace lithostress
 {
@@ -258,18 +259,26 @@ namespace lithostress
                       "10",
                       Patterns::Integer(),
                       "Coarse cells across the width.");
+    prm.declare_entry("Fault names",
+                      "fault",
+                      Patterns::Anything(),
+                      "Names of the faults through the box, one per entry "
+                      "of `Fault surface x`; each needs a subsection of "
+                      "that name in `Faults` with its interface law. The "
+                      "entries below take one value for all faults or one "
+                      "per fault (`Fault arc centre`: one `x, y` per fault, "
+                      "separated by `;`, empty = planar).");
     prm.declare_entry("Fault surface x",
                       "",
                       Patterns::Anything(),
-                      "x of the surface trace of a fault through the "
+                      "x of the surface trace of each fault through the "
                       "whole box [length unit]; empty = no fault; `auto` "
-                      "= where a fault with an arc implies it. The "
-                      "fault's interface law is set in the `Faults` section "
-                      "under the name `fault`.");
+                      "= where a fault with an arc implies it. Faults may "
+                      "not meet or cross inside the box.");
     prm.declare_entry("Fault dip",
                       "63.43",
-                      Patterns::Double(),
-                      "Dip of the fault's planar part [degrees], in (0, "
+                      Patterns::Anything(),
+                      "Dip of each fault's planar part [degrees], in (0, "
                       "90].");
     prm.declare_entry("Fault arc centre",
                       "",
@@ -283,18 +292,19 @@ namespace lithostress
                       "it; empty = planar.");
     prm.declare_entry("Fault arc radius",
                       "0",
-                      Patterns::Double(0),
-                      "Radius of the fault's arc [length unit].");
+                      Patterns::Anything(),
+                      "Radius of each fault's arc [length unit].");
     prm.declare_entry("Fault arc from depth",
                       "0",
-                      Patterns::Double(0),
+                      Patterns::Anything(),
                       "Depth below the top where the planar part ends and "
                       "the arc begins [length unit]; it must be a row of "
                       "the coarse mesh (a layer interface or a cell row).");
     prm.declare_entry("Fault dips towards",
                       "right",
-                      Patterns::Selection("right|left"),
-                      "The side the fault dips towards: its hanging wall.");
+                      Patterns::Anything(),
+                      "The side each fault dips towards (right | left): its "
+                      "hanging wall.");
     prm.leave_subsection();
   }
 
@@ -312,45 +322,103 @@ namespace lithostress
     layer_names = split_list(prm.get("Layer names"));
     const auto counts =
       Utilities::string_to_int(split_list(prm.get("Cells per layer")));
-    cells_across              = positive_count(prm, "Cells across", where);
-    const std::string fault_x = Utilities::trim(prm.get("Fault surface x"));
-    with_fault                = !fault_x.empty();
-    if (with_fault)
+    cells_across = positive_count(prm, "Cells across", where);
+    const std::vector<std::string> surface_xs =
+      split_list(prm.get("Fault surface x"));
+    const unsigned int n_faults = surface_xs.size();
+    faults.assign(n_faults, FaultTrace());
+    surface_x_given.assign(n_faults, 0);
+    // One value for all faults or one per fault.
+    const auto per_fault = [&](const std::string &entry, const char separator) {
+      std::vector<std::string> items = split_list(prm.get(entry), separator);
+      if (items.empty())
+        items.emplace_back();
+      if (items.size() == 1)
+        items.resize(n_faults, items.front());
+      if (items.size() != n_faults)
+        throw_input_error(where + entry,
+                          "needs one value, or one per fault (" +
+                            std::to_string(n_faults) + ")");
+      return items;
+    };
+    if (n_faults > 0)
       {
-        fault.name               = "fault";
-        const double dip_degrees = prm.get_double("Fault dip");
-        if (!(dip_degrees > 0 && dip_degrees <= 90))
-          throw_input_error(where + "Fault dip",
-                            "must lie in (0, 90] degrees, got " +
-                              prm.get("Fault dip"));
-        fault.dip       = dip_degrees * numbers::PI / 180;
-        fault.direction = prm.get("Fault dips towards") == "right" ? 1 : -1;
-        const std::string centre = Utilities::trim(prm.get("Fault arc centre"));
-        fault.has_arc            = !centre.empty();
-        if (fault.has_arc)
+        const auto        names   = per_fault("Fault names", ',');
+        const auto        dips    = per_fault("Fault dip", ',');
+        const auto        towards = per_fault("Fault dips towards", ',');
+        const std::string centre_entry =
+          Utilities::trim(prm.get("Fault arc centre"));
+        // One `x, y` per fault, an empty one for a planar fault.
+        std::vector<std::string> centres;
+        {
+          std::istringstream stream(centre_entry);
+          std::string        item;
+          while (std::getline(stream, item, ';'))
+            centres.push_back(Utilities::trim(item));
+          if (centre_entry.empty() || centre_entry.back() == ';')
+            centres.emplace_back();
+          if (centres.size() == 1)
+            centres.resize(n_faults, centres.front());
+          if (centres.size() != n_faults)
+            throw_input_error(where + "Fault arc centre",
+                              "needs one `x, y` (or nothing) per fault (" +
+                                std::to_string(n_faults) +
+                                "), separated by `;`");
+        }
+        const auto radii  = per_fault("Fault arc radius", ',');
+        const auto depths = per_fault("Fault arc from depth", ',');
+        for (unsigned int k = 0; k < n_faults; ++k)
           {
-            const auto c = split_list(centre);
-            if (c.size() != 2)
-              throw_input_error(where + "Fault arc centre",
-                                "<" + centre + "> is not `x, y`");
-            fault.arc_centre =
-              Point<2>(parse_number(c[0], where + "Fault arc centre"),
-                       parse_number(c[1], where + "Fault arc centre")) *
-              scale;
-            fault.arc_radius = prm.get_double("Fault arc radius") * scale;
-            fault.arc_from_depth =
-              prm.get_double("Fault arc from depth") * scale;
-            if (!(fault.arc_radius > 0))
-              throw_input_error(where + "Fault arc radius",
-                                "must be positive for an arc");
+            FaultTrace &fault = faults[k];
+            fault.name        = Utilities::trim(names[k]);
+            for (unsigned int j = 0; j < k; ++j)
+              if (faults[j].name == fault.name)
+                throw_input_error(where + "Fault names",
+                                  "the name <" + fault.name +
+                                    "> is given twice");
+            const double dip_degrees =
+              parse_number(dips[k], where + "Fault dip");
+            if (!(dip_degrees > 0 && dip_degrees <= 90))
+              throw_input_error(where + "Fault dip",
+                                "must lie in (0, 90] degrees, got " + dips[k]);
+            fault.dip              = dip_degrees * numbers::PI / 180;
+            const std::string side = Utilities::trim(towards[k]);
+            if (side != "right" && side != "left")
+              throw_input_error(where + "Fault dips towards",
+                                "<" + side + "> is neither right nor left");
+            fault.direction          = side == "right" ? 1 : -1;
+            const std::string centre = Utilities::trim(centres[k]);
+            fault.has_arc            = !centre.empty();
+            if (fault.has_arc)
+              {
+                const auto c = split_list(centre);
+                if (c.size() != 2)
+                  throw_input_error(where + "Fault arc centre",
+                                    "<" + centre + "> is not `x, y`");
+                fault.arc_centre =
+                  Point<2>(parse_number(c[0], where + "Fault arc centre"),
+                           parse_number(c[1], where + "Fault arc centre")) *
+                  scale;
+                fault.arc_radius =
+                  parse_number(radii[k], where + "Fault arc radius") * scale;
+                fault.arc_from_depth =
+                  parse_number(depths[k], where + "Fault arc from depth") *
+                  scale;
+                if (!(fault.arc_radius > 0))
+                  throw_input_error(where + "Fault arc radius",
+                                    "must be positive for an arc");
+                if (!(fault.arc_from_depth >= 0))
+                  throw_input_error(where + "Fault arc from depth",
+                                    "must not be negative");
+              }
+            const std::string x = Utilities::trim(surface_xs[k]);
+            if (x == "auto" && !fault.has_arc)
+              throw_input_error(where + "Fault surface x",
+                                "`auto` needs a Fault arc centre");
+            surface_x_given[k] =
+              x == "auto" ? std::nan("")
+                          : parse_number(x, where + "Fault surface x") * scale;
           }
-        if (fault_x == "auto" && !fault.has_arc)
-          throw_input_error(where + "Fault surface x",
-                            "`auto` needs a Fault arc centre");
-        surface_x_given =
-          fault_x == "auto"
-            ? std::nan("")
-            : parse_number(fault_x, where + "Fault surface x") * scale;
       }
     prm.leave_subsection();
 
@@ -368,10 +436,11 @@ namespace lithostress
                         "needs one count per layer (" +
                           std::to_string(n_layers) + ")");
     cells_per_layer.assign(counts.begin(), counts.end());
-    if (with_fault)
+    for (unsigned int k = 0; k < faults.size(); ++k)
       {
-        fault.top_y     = interfaces.front();
-        fault.surface_x = surface_x_given;
+        FaultTrace &fault = faults[k];
+        fault.top_y       = interfaces.front();
+        fault.surface_x   = surface_x_given[k];
         if (fault.has_arc)
           {
             const std::string arc   = where + "Fault arc centre";
@@ -404,9 +473,9 @@ namespace lithostress
             const double implied = x_junction - fault.direction *
                                                   fault.arc_from_depth /
                                                   std::tan(fault.dip);
-            if (std::isnan(surface_x_given))
+            if (std::isnan(surface_x_given[k]))
               fault.surface_x = implied;
-            else if (std::abs(surface_x_given - implied) > 1e-6 * width)
+            else if (std::abs(surface_x_given[k] - implied) > 1e-6 * width)
               throw_input_error(where + "Fault surface x",
                                 "the arc and the planar part imply " +
                                   std::to_string(implied / scale) +
@@ -432,10 +501,31 @@ namespace lithostress
                               "to the base, but it leaves it at y = " +
                                 std::to_string(y / scale) + " (x = " +
                                 std::to_string(fault.x_at(y) / scale) + ")");
-        if (cells_across < 2)
-          throw_input_error(where + "Cells across",
-                            "needs at least 2 cells for a fault");
       }
+    if (!faults.empty() && cells_across < faults.size() + 1)
+      throw_input_error(where + "Cells across",
+                        "needs at least one cell between two faults and "
+                        "beside each (" +
+                          std::to_string(faults.size() + 1) + ")");
+    // Left to right at mid-depth; they may not meet or cross in the box.
+    const double y_mid = 0.5 * (interfaces.front() + interfaces.back());
+    std::sort(faults.begin(),
+              faults.end(),
+              [y_mid](const FaultTrace &a, const FaultTrace &b) {
+                return a.x_at(y_mid) < b.x_at(y_mid);
+              });
+    for (unsigned int k = 0; k + 1 < faults.size(); ++k)
+      for (unsigned int i = 0; i <= 256; ++i)
+        {
+          const double y = interfaces.back() +
+                           (interfaces.front() - interfaces.back()) * i / 256;
+          if (!(faults[k].x_at(y) < faults[k + 1].x_at(y) - 1e-6 * width))
+            throw_input_error(where + "Fault surface x",
+                              "the faults <" + faults[k].name + "> and <" +
+                                faults[k + 1].name +
+                                "> meet or cross in the box (at y = " +
+                                std::to_string(y / scale) + ")");
+        }
   }
 
   template <int dim>
@@ -453,26 +543,27 @@ namespace lithostress
           ys.push_back(interfaces[layer + 1] +
                        thickness * c / cells_per_layer[layer]);
       }
-    // Columns: uniform across the box, or, with a fault, n_left cells from
-    // x = 0 to the fault and the rest from the fault to W in every row, so
-    // that the fault is a column boundary.
-    unsigned int n_left = 0;
-    if (with_fault)
+    // Columns: uniform across the box, or, with faults, a number of cells
+    // between the left side, each fault (left to right) and the right side
+    // in every row, so that each fault is a column boundary.
+    std::vector<unsigned int> first_column = {0};
+    const double y_mid = 0.5 * (interfaces.front() + interfaces.back());
+    for (unsigned int k = 0; k < faults.size(); ++k)
       {
-        const double mid =
-          fault.x_at(0.5 * (interfaces.front() + interfaces.back()));
-        n_left = std::clamp<unsigned int>(static_cast<unsigned int>(std::lround(
-                                            cells_across * mid / width)),
-                                          1,
-                                          cells_across - 1);
+        const unsigned int column = static_cast<unsigned int>(
+          std::lround(cells_across * faults[k].x_at(y_mid) / width));
+        first_column.push_back(std::clamp<unsigned int>(
+          column, first_column.back() + 1, cells_across - (faults.size() - k)));
       }
+    first_column.push_back(cells_across);
     auto x_of = [&](const unsigned int i, const double y) {
-      if (!with_fault)
-        return width * i / cells_across;
-      const double xf = fault.x_at(y);
-      return i <= n_left
-               ? xf * i / n_left
-               : xf + (width - xf) * (i - n_left) / (cells_across - n_left);
+      unsigned int k = 0;
+      while (k + 2 < first_column.size() && i > first_column[k + 1])
+        ++k;
+      const double left  = k == 0 ? 0.0 : faults[k - 1].x_at(y),
+                   right = k == faults.size() ? width : faults[k].x_at(y);
+      return left + (right - left) * (i - first_column[k]) /
+                      (first_column[k + 1] - first_column[k]);
     };
     const unsigned int       nx = cells_across + 1;
     std::vector<Point<2>>    vertices;
@@ -492,12 +583,17 @@ namespace lithostress
         }
     tria.create_triangulation(vertices, cells, SubCellData());
     const double tolerance = 1e-9 * width;
-    if (with_fault && fault.has_arc)
+    // The faces of a fault's arc follow a polar manifold (id 2k + 1 for
+    // fault k), their cells and those cells' other faces a transfinite
+    // interpolation (id 2), so that refinement stays on the arc and the
+    // cells next to it keep their shape.
+    bool with_arc = false;
+    for (unsigned int k = 0; k < faults.size(); ++k)
       {
-        // The fault's faces on the arc follow a polar manifold (id 1),
-        // their cells and those cells' other faces a transfinite
-        // interpolation (id 2), so that refinement stays on the arc and
-        // the cells next to it keep their shape.
+        const FaultTrace &fault = faults[k];
+        if (!fault.has_arc)
+          continue;
+        with_arc                = true;
         const auto on_fault_arc = [&](const Point<2> &p) {
           return fault.depth(p) >= fault.arc_from_depth - tolerance &&
                  std::abs(p[0] - fault.x_at(p[1])) < tolerance;
@@ -506,14 +602,25 @@ namespace lithostress
           for (const auto &face : cell->face_iterators())
             if (!face->at_boundary() && on_fault_arc(face->vertex(0)) &&
                 on_fault_arc(face->vertex(1)))
-              {
-                cell->set_manifold_id(2);
-                for (const auto &f : cell->face_iterators())
-                  if (f->manifold_id() == numbers::flat_manifold_id)
-                    f->set_manifold_id(2);
-                face->set_manifold_id(1);
-              }
-        tria.set_manifold(1, PolarManifold<2>(fault.arc_centre));
+              face->set_manifold_id(2 * k + 1);
+        tria.set_manifold(2 * k + 1, PolarManifold<2>(fault.arc_centre));
+      }
+    if (with_arc)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          {
+            bool next_to_arc = false;
+            for (const auto &face : cell->face_iterators())
+              next_to_arc = next_to_arc ||
+                            (face->manifold_id() != numbers::flat_manifold_id &&
+                             face->manifold_id() != 2);
+            if (!next_to_arc)
+              continue;
+            cell->set_manifold_id(2);
+            for (const auto &face : cell->face_iterators())
+              if (face->manifold_id() == numbers::flat_manifold_id)
+                face->set_manifold_id(2);
+          }
         TransfiniteInterpolationManifold<2> transfinite;
         transfinite.initialize(tria);
         tria.set_manifold(2, transfinite);
@@ -542,9 +649,7 @@ namespace lithostress
   std::vector<FaultTrace>
   LayeredBox<dim>::fault_traces() const
   {
-    if (!with_fault)
-      return {};
-    return {fault};
+    return faults;
   }
 
   template <int dim>

@@ -323,7 +323,7 @@ namespace lithostress
       if (!root)
         return;
       std::ostringstream state;
-      state << "lithostress-checkpoint 1\n"
+      state << "lithostress-checkpoint 2\n"
             << "step " << step << "\ntime " << exact(t) << "\ndt " << exact(dt)
             << "\nstrain_scale " << exact(strain_scale) << "\nstress_scale "
             << exact(stress_scale) << "\nprevious_dt "
@@ -344,7 +344,8 @@ namespace lithostress
         state << row << '\n';
       state << "fault_slip " << fault_slip.size() << '\n';
       for (const auto &r : fault_slip)
-        state << exact(r[0]) << ' ' << exact(r[1]) << ' ' << r[2] << '\n';
+        state << exact(r[0]) << ' ' << exact(r[1]) << ' ' << r[2] << ' ' << r[3]
+              << '\n';
       write_file_atomically(directory + "/state.txt", state.str(), false);
       write_file_atomically(directory + "/model.prm",
                             Checkpoint::model_text(sim.prm),
@@ -382,6 +383,12 @@ namespace lithostress
     };
     expect("lithostress-checkpoint");
     in >> version;
+    if (version != 2)
+      throw ComputationError("the checkpoint " + directory +
+                             "/state.txt has format " +
+                             std::to_string(version) +
+                             "; this lithostress reads format 2 (start the "
+                             "run anew)");
     expect("step");
     in >> step;
     expect("time");
@@ -440,7 +447,7 @@ namespace lithostress
           {
             r[0] = number();
             r[1] = number();
-            in >> r[2];
+            in >> r[2] >> r[3];
           }
       }
     else

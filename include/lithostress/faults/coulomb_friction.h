@@ -51,6 +51,9 @@ namespace lithostress
     double shear_stiffness = 0, normal_stiffness = 0;
     /** μ. */
     double friction_coefficient = 0.1;
+    /** False for an elastic fault (Interface law = elastic): always stuck,
+     * the traction K w whatever its size or sign. */
+    bool slides = true;
     /** ρ_l and ρ_w [kg m⁻³] (0 = no such term) and g [m s⁻²]. */
     double lithostatic_density = 2911, pore_fluid_density = 1000,
            gravity = 9.81;

@@ -13,6 +13,7 @@
 #include <lithostress/faults/coulomb_friction.h>
 #include <lithostress/faults/fault_trace.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -23,27 +24,35 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The fault of a model (SPEC §3.4, thesis chapter 5) as an interface
-   * between two displacement fields: the footwall's cells carry field 0,
-   * the hanging wall's field 1 (FiniteElementSpace with two fields,
+   * The faults of a model (SPEC §3.4, thesis chapter 5) as interfaces
+   * between two displacement fields (FiniteElementSpace with two fields,
    * FE_Nothing on the other side; DEALII-9.4.1-NOTES.md), so the
-   * displacement may jump across the fault's faces, and the interface law
-   * ties the two sides together.
+   * displacement may jump across the faults' faces, and each fault's
+   * interface law ties its two sides together.
+   *
+   * Several faults: identify() finds each fault's faces on the coarse mesh,
+   * cuts the body along them into blocks and gives neighbouring blocks
+   * different fields (a two-colouring), so field 0 is a fault's footwall
+   * on one fault and its hanging wall on another; every law is written in
+   * the fault's own terms, w = u(hanging wall) − u(footwall) and the normal
+   * n into the hanging wall, and the face terms and constraints orient it
+   * per face. A fault that does not split the body, faults that meet or
+   * cross, and blocks that two fields cannot separate are input errors.
    *
    * The `Faults` section names each fault of the geometry and gives its
    * interface law. `elastic`: the traction K w with K = diag(k_s, k_n) per
    * unit fault area [Pa/m] in the fault's (shear, normal) frame, a face
-   * term ∫ (v⁺ − v⁻)·K (u⁺ − u⁻) ds between the two fields (assemble()),
-   * integrated with the faces' Gauss points from whichever side is finer.
+   * term ∫ [v]·K [u] ds between the two fields (assemble()), integrated at
+   * the Gauss-Lobatto points of whichever side is finer.
    * `locked`: exact continuity by constraints
-   * (never a penalty): on fault faces of equal level the hanging wall's
-   * DoFs equal the footwall's; where one side is finer, its trace is
-   * constrained to the coarse side's polynomial (faces whose footwall side
-   * is finer: the coarse hanging-wall DoFs equal the coinciding footwall
-   * nodes, the footwall's other nodes the coarse trace's interpolation), so
-   * that every constraint points from the hanging wall, or from inside a
-   * fine footwall face, towards footwall nodes: no cycles, and the same
-   * constraints on every rank.
+   * (never a penalty): on fault faces of equal level the field-1 side's
+   * DoFs equal the field-0 side's; where one side is finer, its trace is
+   * constrained to the coarse side's polynomial (faces whose field-0 side
+   * is finer: the coarse field-1 DoFs equal the coinciding field-0
+   * nodes, the field-0 side's other nodes the coarse trace's
+   * interpolation), so that every constraint points from field 1, or from
+   * inside a fine field-0 face, towards field-0 nodes: no cycles, and the
+   * same constraints on every rank.
    * `prescribed slip`: the jump is given, w = slip(s, t) d + opening(s, t)
    * n (kinematic, as PyLith's faults), exact through the locked
    * constraints with inhomogeneities: the nodes of each side satisfy
@@ -68,10 +77,12 @@ namespace lithostress
     /** A point of the interface quadrature (on the finer side's face). */
     struct InterfacePoint
     {
-      Point<dim> position;
-      double     JxW = 0;
-      /** n: the footwall's outward normal (into the hanging wall); s: n
-       * turned clockwise, the law's shear direction. */
+      /** The fault it lies on (index into the geometry's faults). */
+      unsigned int fault = 0;
+      Point<dim>   position;
+      double       JxW = 0;
+      /** n: the fault's normal into the hanging wall; s: n turned
+       * clockwise, the law's shear direction. */
       Tensor<1, dim> normal, shear;
       /** Depth below the top surface and distance along the fault from
        * its surface trace [m]. */
@@ -105,6 +116,15 @@ namespace lithostress
                      const std::vector<FaultTrace> &traces,
                      const double                   length_scale);
 
+    /** Find each fault's faces on the coarse mesh of @p triangulation
+     * (its level 0, the same on every rank), cut the body along them into
+     * blocks and give each block a field. Throws InputError if a fault has
+     * no faces in the mesh, does not split the body (its two sides are
+     * connected around an end inside the body), meets or crosses another
+     * fault, or the blocks cannot be given two fields. */
+    void
+    identify(const Triangulation<dim> &triangulation);
+
     /** Whether the model has a fault (two displacement fields). */
     bool
     active() const
@@ -112,8 +132,15 @@ namespace lithostress
       return !faults.empty();
     }
 
-    /** Set each locally owned active cell's FE index: 0 in the footwall,
-     * 1 in the hanging wall (before DoFHandler::distribute_dofs). */
+    /** The number of faults. */
+    unsigned int
+    n_faults() const
+    {
+      return faults.size();
+    }
+
+    /** Set each locally owned active cell's FE index: its block's field
+     * (before DoFHandler::distribute_dofs). */
     void
     set_active_fe_indices(DoFHandler<dim> &dof_handler) const;
 
@@ -132,26 +159,36 @@ namespace lithostress
     bool
     has_face_terms() const;
 
-    /** Whether the fault slides by Coulomb friction (a nonlinear law). */
+    /** Whether fault @p k adds face terms (an elastic or frictional law). */
     bool
-    frictional() const
+    has_face_terms(const unsigned int k) const
     {
-      return !faults.empty() && faults.front().law == Law::frictional;
+      return faults[k].law == Law::elastic || faults[k].law == Law::frictional;
     }
 
-    /** The friction law of a frictional fault. */
+    /** Whether a fault slides by Coulomb friction (a nonlinear law). */
+    bool
+    frictional() const;
+
+    /** The interface law of fault @p k as a CoulombFriction (an elastic
+     * fault's never slides). */
     const CoulombFriction &
-    friction() const
+    friction(const unsigned int k) const
     {
-      return faults.front().friction;
+      return faults[k].friction;
     }
 
-    /** The trace of the model's fault. */
+    /** The trace of fault @p k. */
     const FaultTrace &
-    trace() const
+    trace(const unsigned int k) const
     {
-      return faults.front().trace;
+      return faults[k].trace;
     }
+
+    /** "fault <a>" or "faults <a>, <b>": the frictional faults, for
+     * messages. */
+    std::string
+    frictional_names() const;
 
     /** The DoFs of each locally owned footwall cell together with those of
      * its hanging-wall neighbours across fault faces with face terms: the
@@ -216,22 +253,49 @@ namespace lithostress
       std::shared_ptr<FunctionParser<1>> slip, opening;
     };
 
-    /** Call @p pair(minus cell, face, plus cell, plus face, subface of the
-     * coarser side or invalid) for every fault face pair whose footwall
-     * cell is locally owned; the finer side's face is the one integrated
-     * over. */
+    /** Call @p pair(fault, minus cell, face, subface, plus cell, plus
+     * face, subface; the subface of the coarser side or invalid) for every
+     * face pair of a fault with face terms whose field-0 ("minus") cell is
+     * locally owned; the finer side's face is the one integrated over. */
     void
     for_each_face_pair(
       const DoFHandler<dim> &dof_handler,
       const std::function<
-        void(const typename DoFHandler<dim>::active_cell_iterator &minus,
+        void(const unsigned int                                    fault,
+             const typename DoFHandler<dim>::active_cell_iterator &minus,
              const unsigned int                                    minus_face,
              const unsigned int minus_subface,
              const typename DoFHandler<dim>::active_cell_iterator &plus,
              const unsigned int                                    plus_face,
              const unsigned int plus_subface)> &pair) const;
 
+    /** The coarse cell (level 0) that @p cell descends from. */
+    template <class Iterator>
+    unsigned int
+    coarse_index(const Iterator &cell) const
+    {
+      typename Triangulation<dim>::cell_iterator ancestor = cell;
+      while (ancestor->level() > 0)
+        ancestor = ancestor->parent();
+      return ancestor->index();
+    }
+
+    /** The fault that face @p face of @p cell lies on (-1: none). A
+     * fault face of an active cell lies on the same face of its coarse
+     * ancestor, since the fields are constant on coarse cells. */
+    template <class Iterator>
+    int
+    fault_of(const Iterator &cell, const unsigned int face) const
+    {
+      return coarse_face_fault[coarse_index(cell)][face];
+    }
+
     std::vector<Fault> faults;
+    /** identify()'s results: each coarse cell's field, and the fault of
+     * each of its faces (-1: none). */
+    std::vector<unsigned char> coarse_field;
+    std::vector<std::array<int, GeometryInfo<dim>::faces_per_cell>>
+      coarse_face_fault;
   };
 } // namespace lithostress
 

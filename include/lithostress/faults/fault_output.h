@@ -29,23 +29,26 @@ namespace lithostress
    */
   struct FaultSample
   {
-    double    s = 0, x = 0, y = 0, depth = 0;
-    double    slip = 0, opening = 0, shear_traction = 0, normal_traction = 0;
-    double    vertical_jump = 0;
-    SlipState state         = SlipState::stuck;
+    /** The fault (index into the geometry's faults). */
+    unsigned int fault = 0;
+    double       s = 0, x = 0, y = 0, depth = 0;
+    double       slip = 0, opening = 0, shear_traction = 0, normal_traction = 0;
+    double       vertical_jump = 0;
+    SlipState    state         = SlipState::stuck;
 
     /** For gathering samples over the ranks. */
     template <class Archive>
     void
     serialize(Archive &archive, const unsigned int)
     {
-      archive &s &x &y &depth &slip &opening &shear_traction &normal_traction
-        &vertical_jump &state;
+      archive &fault &s &x &y &depth &slip &opening &shear_traction
+        &normal_traction &vertical_jump &state;
     }
   };
 
-  /** The samples at every interface point of the fault (all ranks get
-   * all of them, sorted by s). @p solution is ghosted. */
+  /** The samples at every interface point of the faults with face terms
+   * (all ranks get all of them, sorted by fault and s). @p solution is
+   * ghosted. */
   template <int dim>
   std::vector<FaultSample>
   sample_fault(const FaultInterface<dim>           &faults,

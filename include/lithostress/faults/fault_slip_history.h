@@ -32,19 +32,21 @@ namespace lithostress
   class FaultSlipHistory
   {
   public:
-    /** (s, p, state) of one point, for transfer and checkpoints. */
-    using Record = std::array<double, 3>;
+    /** (s, p, state, fault) of one point, for transfer and checkpoints. */
+    using Record = std::array<double, 4>;
 
     /**
-     * Fit the history to the interface points at distances @p distances
-     * (this rank's) of mesh @p mesh_version: kept if it belongs to that
-     * mesh, else carried over from the previous points or a restored
-     * profile (zero slip, stuck, if there is none). Collective.
+     * Fit the history to this rank's interface points, on the faults
+     * @p faults at the distances @p distances along them, of mesh
+     * @p mesh_version: kept if it belongs to that mesh, else carried over
+     * from the previous points of the same fault or a restored profile
+     * (zero slip, stuck, if there is none). Collective.
      */
     void
-    reinit(const std::vector<double> &distances,
-           const unsigned long long   mesh_version,
-           const MPI_Comm             communicator);
+    reinit(const std::vector<unsigned int> &faults,
+           const std::vector<double>       &distances,
+           const unsigned long long         mesh_version,
+           const MPI_Comm                   communicator);
 
     /** Make the trial slip and states the history. */
     void
@@ -54,7 +56,8 @@ namespace lithostress
       states = trial_states;
     }
 
-    /** All ranks' committed (s, p, state), sorted by s. Collective. */
+    /** All ranks' committed (s, p, state, fault), sorted by fault and s.
+     * Collective. */
     std::vector<Record>
     gather(const MPI_Comm communicator) const;
 
@@ -71,9 +74,10 @@ namespace lithostress
     std::vector<SlipState> trial_states;
 
   private:
-    std::vector<double> distances;
-    unsigned long long  mesh = ~0ULL;
-    std::vector<Record> restored;
+    std::vector<unsigned int> faults;
+    std::vector<double>       distances;
+    unsigned long long        mesh = ~0ULL;
+    std::vector<Record>       restored;
   };
 } // namespace lithostress
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <string>
+#include <vector>
 
 namespace lithostress
 {
@@ -21,9 +22,31 @@ namespace lithostress
    * an arc; §6.3.2 and §7.2: an arc from the surface). The hanging wall is
    * the side the fault dips towards (it lies above the fault); the fault's
    * jump is w = u(hanging wall) − u(footwall).
+   *
+   * A fault read from a mesh (a Gmsh physical curve) is instead a chain of
+   * the coarse mesh's edges, `polyline`, from its upper end down: straight
+   * segments, or arcs about `arc_centre` if `has_arc` (the whole fault is
+   * then on that circle). Its surface trace is the upper end, depth is
+   * measured from there, and it dips towards the side of its lower end
+   * (towards +x if it is vertical).
    */
   struct FaultTrace
   {
+    /** The point of a polyline trace closest to a given point: its
+     * segment, the parameter in [0, 1] along it, the point, and the
+     * distance along the fault from the upper end there [m]. */
+    struct Projection
+    {
+      unsigned int segment = 0;
+      double       t       = 0;
+      Point<2>     point;
+      double       s = 0;
+    };
+
+    /** The projection of @p p onto the polyline. */
+    Projection
+    project(const Point<2> &p) const;
+
     /** The fault's name (its subsection of `Faults`). */
     std::string name;
     /** x of the surface trace and y of the top surface [m]. */
@@ -39,13 +62,23 @@ namespace lithostress
     double   arc_radius = 0;
     /** The arc's branch: x = c_x + branch sqrt(R² − (y − c_y)²). */
     int branch = 1;
+    /** A fault read from a mesh: its vertices from the upper end down
+     * (empty for the planar or listric trace above). */
+    std::vector<Point<2>> polyline;
+
+    /** Make a trace of @p vertices (from the upper end down; arcs about
+     * @p centre if @p arc): sets the surface point and direction. */
+    void
+    set_polyline(const std::vector<Point<2>> &vertices,
+                 const bool                   arc,
+                 const Point<2>              &centre);
 
     /** Choose the arc's branch so that the fault dips towards
      * `direction` at depth @p depth [m] (set has_arc and the arc first). */
     void
     choose_branch(const double depth);
 
-    /** x of the fault at height @p y. */
+    /** x of the fault at height @p y (the planar or listric trace). */
     double
     x_at(const double y) const;
 
@@ -69,8 +102,18 @@ namespace lithostress
     bool
     on_arc(const Point<2> &p) const
     {
-      return has_arc && depth(p) >= arc_from_depth;
+      return has_arc && (!polyline.empty() || depth(p) >= arc_from_depth);
     }
+
+    /** Distance from @p p to the fault [m] (horizontal for the planar or
+     * listric trace, which is a graph x(y)). */
+    double
+    distance_to(const Point<2> &p) const;
+
+    /** The unit normal of the fault near @p p pointing into the hanging
+     * wall. */
+    Tensor<1, 2>
+    hanging_wall_normal(const Point<2> &p) const;
 
     /** The unit vector along the fault at the height of @p p pointing
      * down dip: slip w·d > 0 moves the hanging wall down (normal sense),

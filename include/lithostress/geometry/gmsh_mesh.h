@@ -5,6 +5,8 @@
 
 #include <lithostress/geometry/geometry_model.h>
 
+#include <set>
+#include <string>
 #include <vector>
 
 namespace lithostress
@@ -17,6 +19,13 @@ namespace lithostress
    * centres in the input, get a PolarManifold, and the cells next to them a
    * TransfiniteInterpolationManifold (as in deal.II step-65), so refinement
    * follows the true curve.
+   *
+   * Faults: physical curves named in `Fault curves` are interior lines
+   * of the mesh (format 2) along which the displacement may jump; each
+   * becomes a fault of that name (a FaultTrace polyline from its upper end
+   * down, on a circle if it has a centre in `Fault arc centres`, which
+   * then also carries a PolarManifold). deal.II refuses boundary ids on
+   * interior lines, so these lines are taken out of what it reads.
    */
   template <int dim>
   class GmshMesh : public GeometryModel<dim>
@@ -33,12 +42,26 @@ namespace lithostress
     boundary_parts() const override;
     std::map<std::string, types::material_id>
     named_regions() const override;
+    std::vector<FaultTrace>
+    fault_traces() const override;
 
   private:
     /** Read `$PhysicalNames` from the file. */
     void
     read_physical_names();
 
+    /** Read the lines of each fault curve and chain them into its trace
+     * (`faults`). Throws InputError naming the entry. */
+    void
+    read_fault_curves(const std::map<std::string, Point<dim>> &centres);
+
+    /** The mesh file without the fault curves' line elements. */
+    std::string
+    text_without_fault_lines() const;
+
+    std::vector<FaultTrace> faults;
+    /** The physical tags of the fault curves. */
+    std::set<int>                                   fault_tags;
     std::string                                     mesh_file;
     double                                          scale;
     std::vector<std::pair<std::string, Point<dim>>> arcs;

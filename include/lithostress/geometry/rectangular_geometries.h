@@ -89,10 +89,11 @@ namespace lithostress
   /**
    * A box x ∈ [0, W] made of horizontal layers between given interface
    * heights (top first), each layer a material id and a named region; the
-   * lithosphere columns of thesis chapters 6 and 7. Optionally cut by a
-   * planar fault from the top to the base (thesis §6.1): the coarse cells
-   * are then trapezoids whose column boundary follows the fault, so that
-   * the fault is a curve of cell faces on every refinement.
+   * lithosphere columns of thesis chapters 6 and 7. Optionally cut by
+   * faults from the top to the base, planar or listric (thesis §6.1-6.3):
+   * the coarse cells are then trapezoids whose column boundaries follow
+   * the faults, so that each fault is a curve of cell faces on every
+   * refinement.
    */
   template <int dim>
   class LayeredBox : public GeometryModel<dim>
@@ -118,12 +119,11 @@ namespace lithostress
     std::vector<std::string>  layer_names;
     std::vector<unsigned int> cells_per_layer;
     unsigned int              cells_across;
-    /** The fault through the box, if `Fault surface x` is set: planar,
-     * or with a circular arc below a depth. */
-    bool       with_fault = false;
-    FaultTrace fault;
+    /** The faults through the box (`Fault surface x`), left to right:
+     * planar, or with a circular arc below a depth. */
+    std::vector<FaultTrace> faults;
     /** `Fault surface x` as given [m] (NaN for `auto`). */
-    double surface_x_given = 0;
+    std::vector<double> surface_x_given;
   };
 } // namespace lithostress
 
