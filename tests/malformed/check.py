@@ -73,6 +73,10 @@ expected = {
     "fault_stiffness_zero": "Faults/fault/Shear stiffness>: must be greater than 0, got 0",
     "fault_stiffness_missing": "Faults/fault/Normal stiffness>: is needed by the elastic law",
     "fault_arc_misses_box": "Geometry/Layered box/Fault arc centre>: the arc misses the box",
+    "faults_cross": "Geometry/Layered box/Fault surface x>: the faults <b> and <a> meet or cross in the box (at y = -1.99",
+    "gmsh_fault_inside": "Faults/Names>: the fault <fault> does not split the body",
+    "gmsh_fault_format4": "Geometry/Gmsh/Fault curves>: fault curves need a mesh file in MSH format 2",
+    "gmsh_fault_unknown_curve": "Geometry/Gmsh/Fault curves>: the mesh has no physical curve <scarp>",
     "rigid_edge_pinned_corner": "Boundary conditions/right/x>: is `rigid`, but another part already prescribes",
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",
