@@ -139,12 +139,18 @@ namespace lithostress
          surface_profile(dof_handler, fe_space, solution, top))
       if (side * (row[0] - trace.surface_x) > 1e-6 * std::abs(row[0]) + 1e-3)
         points.emplace_back(row[0], row[1]);
-    double distance = std::nan(""), lowest = std::numeric_limits<double>::max();
+    // Ranked by sigma_1, the Griffith criterion's excess sigma_1 - T at a
+    // free surface (its tensile regime): C = 1 - tau_m/(T - sigma_m)
+    // orders points the same way below sigma_m = T but is singular there,
+    // which would pick the edge of the failed region instead of its most
+    // failed point (doc/faults.md).
+    double distance = std::nan(""),
+           highest  = -std::numeric_limits<double>::max();
     for (const auto &sample : sample_stresses(
            dof_handler, fe_space, stress_model, griffith, solution, points))
-      if (sample.analysis.degree_of_failure < lowest)
+      if (sample.analysis.principal.sigma_1 > highest)
         {
-          lowest   = sample.analysis.degree_of_failure;
+          highest  = sample.analysis.principal.sigma_1;
           distance = std::abs(sample.value.point[0] - trace.surface_x);
         }
     return distance;

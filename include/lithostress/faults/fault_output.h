@@ -72,8 +72,9 @@ namespace lithostress
     double throw_m = 0;
     /** The deepest point that slides or is open [m] (0: none). */
     double sliding_depth_m = 0;
-    /** Distance from the surface trace to the smallest Griffith C on the
-     * top surface of the downthrown side [m]; NaN if not computed. */
+    /** Distance from the surface trace to where the top surface of the
+     * downthrown side is most likely to fail in tension [m] (thesis §6.1.7's
+     * graben width): the largest σ1 there; NaN if not computed. */
     double       tensile_failure_distance_m = 0;
     unsigned int nonlinear_iterations = 0, linear_solves = 0;
   };
@@ -82,9 +83,12 @@ namespace lithostress
   FaultSummary
   summarize_fault(const std::vector<FaultSample> &samples);
 
-  /** Distance from the surface trace of @p trace to the smallest Griffith
-   * C (@p griffith) among the nodes of the top surface @p top on the
-   * downthrown side (the hanging wall if @p throw_m ≥ 0) [m]. */
+  /** Distance from the surface trace of @p trace to the node of the top
+   * surface @p top on the downthrown side (the hanging wall if
+   * @p throw_m ≥ 0) where the modified Griffith criterion (@p griffith) is
+   * exceeded most [m]: at a free surface it is in its tensile regime and
+   * fails at σ1 = T, so this is the largest σ1 (the degree of failure C
+   * ranks the same points alike below σm = T but is singular there). */
   template <int dim>
   double
   tensile_failure_distance(const FaultTrace                    &trace,
