@@ -7,6 +7,37 @@ Used by the tests to check that a fault read from a Gmsh physical curve
 gives what the built-in generator gives."""
 
 
+def write_msh(path, rows, groups):
+    """rows: the vertex rows from the base up, each a list of x for its y
+    ((y, [x0, x1, ...]), all rows the same length); groups: physical curves
+    as {name: [(i, j, i2, j2), ...]} edges between vertex (i, j) and (i2,
+    j2) (column, row). Cells: the quads between neighbouring rows and
+    columns, physical surface "rock"."""
+    nx = len(rows[0][1])
+    node = lambda i, j: j * nx + i + 1  # noqa: E731
+    names = {name: 1 + k for k, name in enumerate(groups)}
+    with open(path, "w") as f:
+        f.write("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n%d\n" % (len(names) + 1))
+        for name, tag in names.items():
+            f.write('1 %d "%s"\n' % (tag, name))
+        f.write('2 100 "rock"\n$EndPhysicalNames\n$Nodes\n%d\n' % (nx * len(rows)))
+        for j, (y, xs) in enumerate(rows):
+            for i, x in enumerate(xs):
+                f.write("%d %.17g %.17g 0\n" % (node(i, j), x, y))
+        edges = [(names[name], e) for name, es in groups.items() for e in es]
+        quads = [(node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1))
+                 for j in range(len(rows) - 1) for i in range(nx - 1)]
+        f.write("$EndNodes\n$Elements\n%d\n" % (len(edges) + len(quads)))
+        number = 1
+        for tag, (i, j, i2, j2) in edges:
+            f.write("%d 1 2 %d %d %d %d\n" % (number, tag, tag, node(i, j), node(i2, j2)))
+            number += 1
+        for q in quads:
+            f.write("%d 3 2 100 100 %d %d %d %d\n" % ((number,) + q))
+            number += 1
+        f.write("$EndElements\n")
+
+
 def layered_box_msh(path, width, ys, faults, first_columns):
     """ys: the rows' heights from the base up; faults: [(name, x(y))] left
     to right; first_columns: the first column of each block and the total,
