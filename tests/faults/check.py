@@ -120,6 +120,27 @@ for ranks in (1, 2):
           "opening %.6f m (sigma/k_n = %.6f m), largest relative difference %.1e"
           % (ranks, rows[4]["sigma_xx"], exacts[4][2], opening, exacts[4][2] / 1e7, worst))
 
+# The elastic fault tends to the locked (continuous) block as k_n grows:
+# sigma_xx = delta / ((a + b)/E' + 1/k_n), so the relative difference from
+# the continuum's delta E'/(a + b) is c/(1 + c), c = E'/((a + b) k_n):
+# first order in 1/k_n, a factor 10 per decade of k_n.
+Ep = E / (1 - NU ** 2)
+continuum = 10.0 * Ep / 10e3
+gaps = []
+for k_n in (1e8, 1e9, 1e10):
+    out = os.path.abspath("output_elastic_fault_k%g" % k_n)
+    run("faults/elastic_fault.prm", out, 1, ["Faults/fault/Normal stiffness=%g" % k_n])
+    s_xx = read_csv(os.path.join(out, "point_values.csv"))[4]["sigma_xx"]
+    c = Ep / (10e3 * k_n)
+    gaps.append((s_xx - continuum) / continuum)
+    check(abs(gaps[-1] + c / (1 + c)) < 1e-9,
+          "elastic fault, k_n = %g Pa/m: sigma_xx differs from the continuum by %.6e (expected "
+          "-c/(1 + c) = %.6e)" % (k_n, gaps[-1], -c / (1 + c)))
+rates = [math.log10(gaps[i] / gaps[i + 1]) for i in range(2)]
+check(all(abs(r - 1) < 0.05 for r in rates),
+      "elastic fault -> continuum as k_n grows: order %s in 1/k_n (expected 1)"
+      % ", ".join("%.3f" % r for r in rates))
+
 TAU, K_S, GS = 1e7, 1e10 / 1e3, E / (2 * (1 + NU))
 for ranks in (1, 2):
     out = os.path.abspath("output_elastic_fault_shear_%d" % ranks)
