@@ -48,6 +48,7 @@ fault.png: slip along the fault (s from its surface trace, points marked by
 state: stuck, sliding, open) and, for a frictional fault, |tau|/tau_F with
 tau_F = mu max(0, -sigma_n,eff) (mu = Faults/<name>/Friction coefficient of
 parameters.prm): 1 where it slides; else the shear and normal tractions.
+With several faults, fault_<name>.csv gives fault_<name>.png for each.
 stress_depth_*.png: a few singular values (e.g. under a point load) that
 would squash a panel are put off scale and named. surface_profile.png:
 thin_plate_comparison.csv as written by the simulator (forebulge table) gives
@@ -402,7 +403,7 @@ def plot_principal_stresses(directory, settings):
         outline = seg[np.isfinite(seg).all(axis=(1, 2))]
         if not len(outline):
             outline = None
-    trace = fault_trace(directory, settings)
+    traces = fault_traces(directory, settings)
 
     if outline is not None:
         pts = outline.reshape(-1, 2)
@@ -495,7 +496,7 @@ def plot_principal_stresses(directory, settings):
         ax = fig.add_axes([x_left / fig_w, ypos / fig_h, panel_w / fig_w, h / fig_h])
         ypos -= gap
         draw_outline(ax, outline, outline_width)
-        if trace is not None:
+        for trace in traces:
             ax.plot(trace[0], trace[1], color="black", linewidth=1.8, zorder=4)
         inside = (x >= xl[0] - drawn) & (x <= xl[1] + drawn)
         widths = bar_widths(longest * panel_w / (xl[1] - xl[0]) * 72)
@@ -587,9 +588,23 @@ def plot_principal_stresses(directory, settings):
 # Surface profile
 
 
-def read_fault(directory):
-    """fault.csv as (columns as arrays, states), or None if there is none."""
-    path = os.path.join(directory, "fault.csv")
+def fault_files(directory):
+    """[(name, csv path, png path)] of the faults with output: fault.csv and
+    fault.png for a model's one fault, fault_<name>.csv and
+    fault_<name>.png for each of several (names from parameters.prm)."""
+    single = os.path.join(directory, "fault.csv")
+    if os.path.exists(single):
+        return [("", single, os.path.join(directory, "fault.png"))]
+    prm_path = os.path.join(directory, "parameters.prm")
+    if not os.path.exists(prm_path):
+        return []
+    names = [n.strip() for n in read_prm(prm_path).get("Faults/Names", "").split(",") if n.strip()]
+    return [(n, os.path.join(directory, "fault_%s.csv" % n), os.path.join(directory, "fault_%s.png" % n))
+            for n in names if os.path.exists(os.path.join(directory, "fault_%s.csv" % n))]
+
+
+def read_fault(path):
+    """A fault CSV as (columns as arrays, states), or None if there is none."""
     if not os.path.exists(path):
         return None
     names = ("s", "x", "y", "slip", "opening", "shear_traction", "normal_traction")
@@ -616,26 +631,37 @@ def read_fault(directory):
     return {n: np.array(v) for n, v in columns.items()}, np.array(states)
 
 
-def fault_trace(directory, settings):
-    """The fault's interface points (x, y) in plotting units, or None."""
-    fault = read_fault(directory)
-    if fault is None or len(fault[1]) == 0:
-        return None
-    scale = settings["length_scale"]
-    return fault[0]["x"] / scale, fault[0]["y"] / scale
+def fault_traces(directory, settings):
+    """Each fault's interface points (x, y) in plotting units."""
+    traces = []
+    for _, path, _ in fault_files(directory):
+        fault = read_fault(path)
+        if fault is not None and len(fault[1]) > 0:
+            scale = settings["length_scale"]
+            traces.append((fault[0]["x"] / scale, fault[0]["y"] / scale))
+    return traces
 
 
-def plot_fault(directory, settings):
-    """fault.png: slip and the shear against the friction limit along the
-    fault."""
-    fault = read_fault(directory)
+def plot_faults(directory, settings):
+    """fault.png (fault_<name>.png) for each fault; the last one's path."""
+    out = None
+    for name, path, png in fault_files(directory):
+        out = plot_fault(directory, settings, name, path, png) or out
+    return out
+
+
+def plot_fault(directory, settings, name, path, png):
+    """A fault's figure: slip and the shear against the friction limit
+    along the fault."""
+    fault = read_fault(path)
     if fault is None or len(fault[1]) == 0:
         return None
     values, states = fault
     prm = read_prm(os.path.join(directory, "parameters.prm"))
     names = [n.strip() for n in prm.get("Faults/Names", "").split(",") if n.strip()]
-    law = prm.get("Faults/%s/Interface law" % names[0], "") if names else ""
-    mu = float(prm.get("Faults/%s/Friction coefficient" % names[0], "nan")) if names else math.nan
+    key = name or (names[0] if names else "")
+    law = prm.get("Faults/%s/Interface law" % key, "") if key else ""
+    mu = float(prm.get("Faults/%s/Friction coefficient" % key, "nan")) if key else math.nan
     unit, scale = settings["length_unit"], settings["length_scale"]
     sscale, sunit = settings["stress_scale"], settings["stress_unit"]
     s = values["s"] / scale
@@ -650,7 +676,8 @@ def plot_fault(directory, settings):
     top.axhline(0, color="0.7", linewidth=0.6)
     top.set_ylabel("slip [m] (+ normal, - reverse)")
     top.legend(fontsize=8, loc="best")
-    top.set_title(titled(settings, "fault: slip and shear along the fault"), fontsize=10)
+    top.set_title(titled(settings, "fault%s: slip and shear along the fault"
+                         % (" " + name if name else "")), fontsize=10)
     if law == "frictional" and math.isfinite(mu):
         limit = mu * np.maximum(0.0, -values["normal_traction"])
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -677,10 +704,9 @@ def plot_fault(directory, settings):
     for ax in (top, bottom):
         ax.tick_params(labelsize=8)
     fig.tight_layout()
-    out = os.path.join(directory, "fault.png")
-    save_complete(fig, out)
+    save_complete(fig, png)
     plt.close(fig)
-    return out
+    return png
 
 
 def thin_plate_curve(directory, x_profile, uy_profile):
@@ -993,7 +1019,7 @@ def main():
     jobs = [("principal stresses", lambda: plot_principal_stresses(directory, settings)),
             ("surface profile", lambda: plot_surface_profile(directory, settings)),
             ("point history", lambda: plot_point_history(directory, settings)),
-            ("fault", lambda: plot_fault(directory, settings))]
+            ("fault", lambda: plot_faults(directory, settings))]
     for path in sorted(glob.glob(os.path.join(glob.escape(directory), "stress_depth_*.csv"))):
         jobs.append((os.path.basename(path), lambda p=path: plot_stress_depth(p, settings)))
     status = 0

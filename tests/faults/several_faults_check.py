@@ -24,6 +24,15 @@ terms and constraints must orient the jump per fault). Left side fixed.
    linear, so exact to round-off on uniformly refined meshes; elastic, its
    fault.csv equals the layered box's arc fault point by point (same
    manifold, same trace) and every point lies on the circle.
+5. prm/graben.prm: two frictional normal faults dipping towards each other
+   (traces at 480 and 520 km) in the 20 km layer of the thesis's normal
+   fault under 50 MPa tension. The model is mirror-symmetric about
+   x = 500 km in its stresses (the tension is uniform, the right edge's
+   u_x = 0 only fixes a translation) and its mesh, so the two throws and
+   the surface's u_y at mirrored points must agree to the Newton
+   tolerance (1e-6 of the throw); the block between the faults subsides
+   (both throws positive, the hanging wall of both) and the footwalls
+   rise next to the faults (rift shoulders, u_y > 0).
 Round-off: the solver stops at 1e-12; values relative to |w| or tau: 1e-9.
 """
 import math
@@ -163,4 +172,33 @@ off = max(abs(math.hypot(p["x"] + 15e3, p["y"] + 15e3) - R * 1e3) for p in a)
 check(len(a) == len(b_rows) and len(a) > 12 and diff < 1e-6 and off < 1e-6 * R * 1e3,
       "elastic arc fault from Gmsh equals the layered box's at all %d points (s, x, y [km] and "
       "slip, largest relative difference %.1e), all on the circle (%.1e m)" % (len(a), diff, off))
+# 5. A symmetric graben.
+import json  # noqa: E402
+ROOT = os.path.dirname(os.path.dirname(HERE))
+out = os.path.abspath("output_graben")
+run(os.path.join(ROOT, "prm", "graben.prm"), out, 2,
+    ["Mesh refinement/Initial global refinement=2", "Output/Write ParaView files=false",
+     "Output/Figures/Enabled=false"])
+throws = []
+for name in ("west", "east"):
+    with open(os.path.join(out, "fault_summary_%s.json" % name)) as f:
+        throws.append(json.load(f)["throw_m"])
+# (The traces themselves carry two values, one per side: left out.)
+profile = {round(r["x"], 3): r["u_y"] for r in read_csv(os.path.join(out, "surface_profile.csv"))
+           if min(abs(r["x"] - 480e3), abs(r["x"] - 520e3)) > 1.0}
+pairs = [(x, abs(u - profile[round(1e6 - x, 3)])) for x, u in profile.items() if round(1e6 - x, 3) in profile]
+asym = max(d for x, d in pairs if abs(x - 500e3) <= 200e3)
+# The edges differ (a traction on the left, rollers on the right), which
+# the fault's flexure only reaches by its tail, throw sqrt(2)
+# exp(-480 km / alpha), alpha = 54 km (see normal_fault_check.py).
+alpha = (4 * E * 20e3 ** 3 / (12 * (1 - NU ** 2)) / (2900.0 * 9.81)) ** 0.25
+edge = max(d for x, d in pairs)
+shoulders = [max(u for x, u in profile.items() if x < 480e3), max(u for x, u in profile.items() if x > 520e3)]
+tail = throws[0] * math.sqrt(2) * math.exp(-480e3 / alpha)
+check(min(throws) > 0 and abs(throws[0] - throws[1]) <= 1e-6 * throws[0] and asym <= 1e-6 * throws[0]
+      and edge <= tail and min(shoulders) > 0,
+      "graben (2 ranks): the block subsides by throws %.3f and %.3f m on the two faults, the surface "
+      "is symmetric about 500 km to %.1e m within 200 km of it (%.1e m at the edges, within the "
+      "flexure's tail %.1e m), the shoulders rise by %.1f and %.1f m"
+      % (throws[0], throws[1], asym, edge, tail, shoulders[0], shoulders[1]))
 finish()
