@@ -95,6 +95,15 @@ def discrete_bdf2(case, times, h, G, K, tau, e1, e2):
             for t in times}
 
 
+def check_order(label, errors, order):
+    """The errors at steps tau/10, tau/20, tau/40 fall with the order."""
+    rates = [math.log2(errors[i] / errors[i + 1]) for i in range(2)]
+    check(all(abs(r - order) < 0.1 for r in rates),
+          "%s: error against the closed form %s of 2G|e|, order %s (expected %g)"
+          % (label, ", ".join("%.2e" % e for e in errors),
+             ", ".join("%.2f" % r for r in rates), order))
+
+
 def simulate(case, scheme, theta, step_years, plane_state="plane strain"):
     out = os.path.abspath("output_maxwell_%s_%s_%g_%g_%s"
                           % (case, scheme.replace(" ", "_"), theta, step_years,
@@ -157,11 +166,7 @@ for case in ("relaxation", "rate"):
                   % (label, h, worst_discrete))
             check(worst_shear < 1e-8, "%s, h = %g yr: no shear stress (%.1e)" % (label, h, worst_shear))
             errors.append(worst_exact)
-        rates = [math.log2(errors[i] / errors[i + 1]) for i in range(2)]
-        check(all(abs(r - order) < 0.1 for r in rates),
-              "%s: error against the closed form %s of 2G|e|, order %s (expected %g)"
-              % (label, ", ".join("%.2e" % e for e in errors),
-                 ", ".join("%.2f" % r for r in rates), order))
+        check_order(label, errors, order)
 
 for case in ("relaxation", "rate"):
     for scheme, order in (("BDF2", 2.0), ("generalized midpoint", 1.0)):
@@ -179,9 +184,5 @@ for case in ("relaxation", "rate"):
             check(len(rows) == 2 * 5 and worst_zz < 1e-8,
                   "%s, h = %g yr: sigma_zz = 0 (largest %.1e of 2G|e|)" % (label, h, worst_zz))
             errors.append(worst_exact)
-        rates = [math.log2(errors[i] / errors[i + 1]) for i in range(2)]
-        check(all(abs(r - order) < 0.1 for r in rates),
-              "%s: error against the closed form %s of 2G|e|, order %s (expected %g)"
-              % (label, ", ".join("%.2e" % e for e in errors),
-                 ", ".join("%.2f" % r for r in rates), order))
+        check_order(label, errors, order)
 finish()
