@@ -4,6 +4,7 @@
 #include <lithostress/geometry/l_shaped_domain.h>
 #include <lithostress/geometry/quarter_annulus.h>
 #include <lithostress/geometry/rectangular_geometries.h>
+#include <lithostress/geometry/subduction_zone.h>
 
 namespace lithostress
 {
@@ -16,7 +17,7 @@ namespace lithostress
                       "rectangular block",
                       Patterns::Selection("rectangular block|cantilever beam|"
                                           "thin plate|layered box|quarter "
-                                          "annulus|L-shaped domain|gmsh"),
+                                          "annulus|L-shaped domain|subduction zone|gmsh"),
                       "The geometry: a built-in generator or a Gmsh mesh.");
     prm.declare_entry("Length unit",
                       "m",
@@ -30,6 +31,7 @@ namespace lithostress
     LayeredBox<dim>::declare_parameters(prm);
     QuarterAnnulus<dim>::declare_parameters(prm);
     LShapedDomain<dim>::declare_parameters(prm);
+    SubductionZone<dim>::declare_parameters(prm);
     GmshMesh<dim>::declare_parameters(prm);
     prm.leave_subsection();
   }
@@ -64,6 +66,8 @@ namespace lithostress
       model = std::make_unique<QuarterAnnulus<dim>>();
     else if (name == "L-shaped domain")
       model = std::make_unique<LShapedDomain<dim>>();
+    else if (name == "subduction zone")
+      model = std::make_unique<SubductionZone<dim>>();
     else if (name == "gmsh")
       model = std::make_unique<GmshMesh<dim>>();
     else

@@ -1,0 +1,457 @@
+#include <deal.II/grid/manifold_lib.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
+#include <lithostress/geometry/block_mesh.h>
+#include <lithostress/geometry/subduction_zone.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace lithostress
+{
+  template <int dim>
+  void
+  SubductionZone<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Subduction zone");
+    prm.declare_entry("Width",
+                      "920",
+                      Patterns::Double(),
+                      "x of the right edge [length unit] (the thesis does "
+                      "not state it: 920 km fits the basal shear zone of "
+                      "§7.6.1, 900 km the thermal anomaly of §7.6.2).");
+    prm.declare_entry("Base", "-95", Patterns::Double(), "y of the base.");
+    prm.declare_entry("Sea floor",
+                      "-5",
+                      Patterns::Double(),
+                      "y of the undisturbed sea floor (the top of the "
+                      "oceanic plate); the plate boundary's circle touches "
+                      "it at its top.");
+    prm.declare_entry("Plate boundary centre",
+                      "445.456, -305",
+                      Patterns::Anything(),
+                      "Centre `x, y` of the plate boundary's circle (thesis "
+                      "§7.2).");
+    prm.declare_entry("Plate boundary radius",
+                      "300",
+                      Patterns::Double(),
+                      "Radius of the plate boundary's circle.");
+    prm.declare_entry("Trench position",
+                      "500",
+                      Patterns::Double(),
+                      "x of the trench axis, where the continental surface "
+                      "meets the circle (10 km deep with the defaults).");
+    prm.declare_entry("Coast position",
+                      "700",
+                      Patterns::Double(),
+                      "x where the continental surface, rising linearly "
+                      "from the trench, reaches the Land height (the thesis "
+                      "does not state it); it must lie right of where the "
+                      "plate boundary meets the base.");
+    prm.declare_entry("Land height",
+                      "0",
+                      Patterns::Double(),
+                      "y of the continental surface beyond the coast.");
+    prm.declare_entry("Oceanic crust thickness", "5", Patterns::Double(), "");
+    prm.declare_entry("Oceanic elastic thickness",
+                      "30",
+                      Patterns::Double(),
+                      "Thickness of the oceanic plate's elastic lid, crust "
+                      "included, below the sea floor and, in the slab, "
+                      "below the plate boundary.");
+    prm.declare_entry("Continental elastic thickness",
+                      "10",
+                      Patterns::Double(),
+                      "Depth of the upper (elastic) crust below the "
+                      "continental surface.");
+    prm.declare_entry("Continental crust thickness",
+                      "35",
+                      Patterns::Double(),
+                      "Depth of the continental Moho below the surface.");
+    prm.declare_entry("Coarse cell size",
+                      "20",
+                      Patterns::Double(),
+                      "Target size of the coarse cells [length unit]; each "
+                      "layer has at least one cell through it.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  SubductionZone<dim>::parse_parameters(ParameterHandler &prm,
+                                        const double      scale)
+  {
+    const std::string where = "Geometry/Subduction zone/";
+    prm.enter_subsection("Subduction zone");
+    width         = prm.get_double("Width") * scale;
+    base          = prm.get_double("Base") * scale;
+    sea_floor     = prm.get_double("Sea floor") * scale;
+    radius        = prm.get_double("Plate boundary radius") * scale;
+    trench_x      = prm.get_double("Trench position") * scale;
+    coast_x       = prm.get_double("Coast position") * scale;
+    land_height   = prm.get_double("Land height") * scale;
+    oceanic_crust = prm.get_double("Oceanic crust thickness") * scale;
+    oceanic_lid   = prm.get_double("Oceanic elastic thickness") * scale;
+    continental_elastic =
+      prm.get_double("Continental elastic thickness") * scale;
+    continental_crust = prm.get_double("Continental crust thickness") * scale;
+    cell_size         = prm.get_double("Coarse cell size") * scale;
+    centre            = parse_point_list<2>(prm.get("Plate boundary centre"),
+                                 where + "Plate boundary centre",
+                                 scale)
+               .at(0);
+    prm.leave_subsection();
+
+    const auto require =
+      [&](const bool ok, const std::string &entry, const std::string &what) {
+        if (!ok)
+          throw_input_error(where + entry, what);
+      };
+    require(width > 0, "Width", "must be positive");
+    require(sea_floor > base && land_height > base,
+            "Base",
+            "must lie below the sea floor and the land");
+    require(radius > 0, "Plate boundary radius", "must be positive");
+    require(std::abs(centre[1] + radius - sea_floor) <= 1e-6 * radius,
+            "Plate boundary centre",
+            "the circle must touch the sea floor at its top: centre y + "
+            "radius = Sea floor");
+    require(centre[0] > 0 && centre[1] + radius - base > 0 && base > centre[1],
+            "Plate boundary centre",
+            "the circle's top must lie inside the section and its centre "
+            "below the base");
+    require(oceanic_crust > 0 && oceanic_lid > oceanic_crust &&
+              sea_floor - oceanic_lid > base,
+            "Oceanic elastic thickness",
+            "needs 0 < crust < elastic thickness < sea floor - base");
+    require(continental_elastic > 0 &&
+              continental_crust > continental_elastic &&
+              land_height - continental_crust > base,
+            "Continental crust thickness",
+            "needs 0 < elastic thickness < crust thickness < land - base");
+    require(cell_size > 0, "Coarse cell size", "must be positive");
+    require(trench_x > centre[0] && trench_x < centre[0] + radius,
+            "Trench position",
+            "must lie on the circle right of its centre");
+    const double trench_y =
+      centre[1] + std::sqrt(radius * radius -
+                            (trench_x - centre[0]) * (trench_x - centre[0]));
+    require(trench_y > base && trench_y < land_height,
+            "Trench position",
+            "the trench (on the circle) must lie between the base and the "
+            "land");
+    require(coast_x > x_on_circle(base, radius) && coast_x < width,
+            "Coast position",
+            "must lie right of where the plate boundary meets the base (" +
+              std::to_string(x_on_circle(base, radius) / scale) +
+              ") and left of the right edge");
+    const double deepest = crossing(continental_crust)[1];
+    require(deepest > base && crossing(continental_elastic)[1] > deepest &&
+              crossing(continental_elastic)[1] < trench_y,
+            "Continental crust thickness",
+            "the continental layers must cross the plate boundary between "
+            "the trench and the base");
+  }
+
+  template <int dim>
+  double
+  SubductionZone<dim>::x_on_circle(const double y, const double r) const
+  {
+    const double dy = y - centre[1];
+    return centre[0] + std::sqrt(std::max(0.0, r * r - dy * dy));
+  }
+
+  template <int dim>
+  double
+  SubductionZone<dim>::land_surface(const double x) const
+  {
+    const double trench_y =
+      centre[1] + std::sqrt(radius * radius -
+                            (trench_x - centre[0]) * (trench_x - centre[0]));
+    if (x >= coast_x)
+      return land_height;
+    return trench_y +
+           (land_height - trench_y) * (x - trench_x) / (coast_x - trench_x);
+  }
+
+  template <int dim>
+  Point<2>
+  SubductionZone<dim>::crossing(const double depth) const
+  {
+    // Bisection in y along the circle: g(y) = y - (land(x(y)) - depth)
+    // is positive at the trench and negative at the base.
+    const double trench_y =
+      centre[1] + std::sqrt(radius * radius -
+                            (trench_x - centre[0]) * (trench_x - centre[0]));
+    const auto g = [&](const double y) {
+      return y - (land_surface(x_on_circle(y, radius)) - depth);
+    };
+    double hi = trench_y, lo = base;
+    if (g(hi) * g(lo) > 0)
+      return Point<2>(x_on_circle(base, radius), base - 1);
+    for (unsigned int i = 0; i < 200; ++i)
+      {
+        const double mid       = 0.5 * (hi + lo);
+        (g(mid) > 0 ? hi : lo) = mid;
+      }
+    return Point<2>(x_on_circle(lo, radius), lo);
+  }
+
+  template <int dim>
+  void
+  SubductionZone<dim>::create_coarse_mesh(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    using Curve      = SectionCurve;
+    const auto count = [&](const double length) {
+      return std::max(1u,
+                      static_cast<unsigned int>(
+                        std::lround(std::abs(length) / cell_size)));
+    };
+    const double r_crust = radius - oceanic_crust, r_lid = radius - oceanic_lid;
+    const double trench_y =
+      centre[1] + std::sqrt(radius * radius -
+                            (trench_x - centre[0]) * (trench_x - centre[0]));
+    const Point<2> trench(trench_x, trench_y);
+    const Point<2> p1 = crossing(continental_elastic),
+                   p2 = crossing(continental_crust);
+    // Stations across the slab: radial lines through the apex, the
+    // trench and the two crossings (unit directions from the centre).
+    const auto unit = [&](const Point<2> &p) {
+      const Tensor<1, 2> d = p - centre;
+      return d / d.norm();
+    };
+    const std::vector<Tensor<1, 2>> station = {
+      unit(Point<2>(centre[0], sea_floor)), unit(trench), unit(p1), unit(p2)};
+    const auto on = [&](const Tensor<1, 2> &u, const double r) {
+      return Point<2>(centre + r * u);
+    };
+    const auto at_base = [&](const Tensor<1, 2> &u) {
+      return Point<2>(centre + ((base - centre[1]) / u[1]) * u);
+    };
+    const auto arc = [&](const Point<2> &a, const Point<2> &b) {
+      return Curve::arc(centre, a, b);
+    };
+
+    // Cells through the layers. The continental layers' left sides are
+    // the plate boundary's arc segments, which are also the slab's blocks
+    // along it: their counts serve both (the larger of the two lengths).
+    // The oceanic and continental mantles meet at the slab's end and need
+    // equal, even counts.
+    const auto arc_length = [&](const Point<2> &a, const Point<2> &b) {
+      return radius * std::acos(std::clamp(unit(a) * unit(b), -1.0, 1.0));
+    };
+    const Point<2>     slab_base(x_on_circle(base, radius), base);
+    const unsigned int n_crust = count(oceanic_crust),
+                       n_lid   = count(oceanic_lid - oceanic_crust),
+                       n_upper = std::max(count(continental_elastic),
+                                          count(arc_length(trench, p1))),
+                       n_lower = std::max(count(continental_crust -
+                                                continental_elastic),
+                                          count(arc_length(p1, p2)));
+    unsigned int n_mantle =
+      std::max({count(sea_floor - oceanic_lid - base),
+                count(land_height - continental_crust - base),
+                count(arc_length(p2, slab_base))});
+    n_mantle += n_mantle % 2;
+    const unsigned int n_along_slab[3] = {
+      count(radius * std::acos(station[0] * station[1])), n_upper, n_lower};
+
+    BlockMesh blocks;
+    // The oceanic plate seaward of the circle's top: flat layers.
+    {
+      const double       x0 = 0, x1 = centre[0];
+      const double       ys[4] = {sea_floor,
+                                  sea_floor - oceanic_crust,
+                                  sea_floor - oceanic_lid,
+                                  base};
+      const unsigned int n[3]  = {n_crust, n_lid, n_mantle};
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const Point<2> a(x0, ys[k + 1]), b(x1, ys[k + 1]), c(x1, ys[k]),
+            d(x0, ys[k]);
+          blocks.add_block(Curve::line(a, b),
+                           Curve::line(b, c),
+                           Curve::line(c, d),
+                           Curve::line(d, a),
+                           count(x1 - x0),
+                           n[k],
+                           k);
+        }
+    }
+    // The slab between consecutive stations: crust, lid and mantle.
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const Tensor<1, 2> &ua = station[k], &ub = station[k + 1];
+        const double        r[3] = {radius, r_crust, r_lid};
+        const unsigned int  n[2] = {n_crust, n_lid};
+        for (unsigned int layer = 0; layer < 2; ++layer)
+          {
+            const double outer = r[layer], inner = r[layer + 1];
+            blocks.add_block(arc(on(ua, inner), on(ub, inner)),
+                             Curve::line(on(ub, inner), on(ub, outer)),
+                             arc(on(ub, outer), on(ua, outer)),
+                             Curve::line(on(ua, outer), on(ua, inner)),
+                             n_along_slab[k],
+                             n[layer],
+                             layer);
+          }
+        blocks.add_block(Curve::line(at_base(ua), at_base(ub)),
+                         Curve::line(at_base(ub), on(ub, r_lid)),
+                         arc(on(ub, r_lid), on(ua, r_lid)),
+                         Curve::line(on(ua, r_lid), at_base(ua)),
+                         n_along_slab[k],
+                         n_mantle,
+                         2);
+      }
+    // The slab's end, from the last station to the base.
+    {
+      const Tensor<1, 2> &u = station[3];
+      const Point<2>      b_outer(x_on_circle(base, radius), base),
+        b_crust(x_on_circle(base, r_crust), base),
+        b_lid(x_on_circle(base, r_lid), base);
+      blocks.add_block(arc(on(u, r_crust), b_crust),
+                       Curve::line(b_crust, b_outer),
+                       arc(b_outer, on(u, radius)),
+                       Curve::line(on(u, radius), on(u, r_crust)),
+                       n_mantle,
+                       n_crust,
+                       0);
+      blocks.add_block(arc(on(u, r_lid), b_lid),
+                       Curve::line(b_lid, b_crust),
+                       arc(b_crust, on(u, r_crust)),
+                       Curve::line(on(u, r_crust), on(u, r_lid)),
+                       n_mantle,
+                       n_lid,
+                       1);
+      blocks.add_triangle(Curve::line(on(u, r_lid), at_base(u)),
+                          Curve::line(at_base(u), b_lid),
+                          arc(b_lid, on(u, r_lid)),
+                          n_mantle,
+                          2);
+    }
+    // The continental plate: the wedge between the plate boundary and
+    // the coast, then flat layers to the right edge.
+    {
+      const Point<2>     b_outer(x_on_circle(base, radius), base);
+      const double       tops[3] = {land_height,
+                                    land_height - continental_elastic,
+                                    land_height - continental_crust};
+      const Point<2>     left[4] = {trench, p1, p2, b_outer};
+      const unsigned int n[3]    = {n_upper, n_lower, n_mantle};
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          const Point<2> coast_top(coast_x, tops[k]),
+            coast_bottom(coast_x, k < 2 ? tops[k + 1] : base);
+          blocks.add_block(Curve::line(left[k + 1], coast_bottom),
+                           Curve::line(coast_bottom, coast_top),
+                           Curve::line(coast_top, left[k]),
+                           arc(left[k], left[k + 1]),
+                           count(coast_x - trench_x),
+                           n[k],
+                           3 + k);
+          const Point<2> a(coast_x, k < 2 ? tops[k + 1] : base),
+            b(width, k < 2 ? tops[k + 1] : base), c(width, tops[k]),
+            d(coast_x, tops[k]);
+          blocks.add_block(Curve::line(a, b),
+                           Curve::line(b, c),
+                           Curve::line(c, d),
+                           Curve::line(d, a),
+                           count(width - coast_x),
+                           n[k],
+                           3 + k);
+        }
+    }
+
+    Triangulation<2> serial(tria.get_mesh_smoothing());
+    blocks.create(serial, 1e-9 * width);
+    tria.copy_triangulation(serial);
+
+    // Faces on the circles about the centre (the plate boundary, the
+    // ocean floor's bend and the slab's layers) follow a polar manifold,
+    // their cells a transfinite interpolation.
+    const double tolerance   = 1e-9 * width;
+    const auto   on_a_circle = [&](const auto &face) {
+      const double r0 = face->vertex(0).distance(centre),
+                   r1 = face->vertex(1).distance(centre);
+      if (std::abs(r0 - r1) > tolerance)
+        return false;
+      for (const double r : {radius, r_crust, r_lid})
+        if (std::abs(r0 - r) < tolerance)
+          return true;
+      return false;
+    };
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (on_a_circle(face))
+          {
+            cell->set_manifold_id(2);
+            for (const auto &f : cell->face_iterators())
+              if (f->manifold_id() == numbers::flat_manifold_id)
+                f->set_manifold_id(2);
+            face->set_manifold_id(1);
+          }
+    tria.set_manifold(1, PolarManifold<2>(centre));
+    TransfiniteInterpolationManifold<2> transfinite;
+    transfinite.initialize(tria);
+    tria.set_manifold(2, transfinite);
+
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const Point<2> c = face->center();
+            face->set_boundary_id(
+              std::abs(c[0]) < tolerance           ? 0
+              : std::abs(c[0] - width) < tolerance ? 1
+              : std::abs(face->vertex(0)[1] - base) < tolerance &&
+                  std::abs(face->vertex(1)[1] - base) < tolerance
+                ? 2
+              : c[0] < trench_x ? 3
+                                : 4);
+          }
+  }
+
+  template <int dim>
+  std::map<std::string, types::boundary_id>
+  SubductionZone<dim>::boundary_parts() const
+  {
+    return {
+      {"left", 0}, {"right", 1}, {"base", 2}, {"ocean_floor", 3}, {"land", 4}};
+  }
+
+  template <int dim>
+  std::map<std::string, types::material_id>
+  SubductionZone<dim>::named_regions() const
+  {
+    return {{"oceanic_crust", 0},
+            {"oceanic_lid", 1},
+            {"oceanic_mantle", 2},
+            {"upper_crust", 3},
+            {"lower_crust", 4},
+            {"continental_mantle", 5}};
+  }
+
+  template <int dim>
+  std::vector<FaultTrace>
+  SubductionZone<dim>::fault_traces() const
+  {
+    FaultTrace trace;
+    trace.name = "plate_boundary";
+    trace.top_y =
+      centre[1] + std::sqrt(radius * radius -
+                            (trench_x - centre[0]) * (trench_x - centre[0]));
+    trace.surface_x      = trench_x;
+    trace.direction      = 1;
+    trace.dip            = std::asin((trench_x - centre[0]) / radius);
+    trace.has_arc        = true;
+    trace.arc_centre     = centre;
+    trace.arc_radius     = radius;
+    trace.arc_from_depth = 0;
+    trace.choose_branch(0.5 * (trace.top_y - base));
+    return {trace};
+  }
+
+  template class SubductionZone<2>;
+} // namespace lithostress
