@@ -134,9 +134,7 @@ namespace lithostress
     require(trench_x > centre[0] && trench_x < centre[0] + radius,
             "Trench position",
             "must lie on the circle right of its centre");
-    const double trench_y =
-      centre[1] + std::sqrt(radius * radius -
-                            (trench_x - centre[0]) * (trench_x - centre[0]));
+    const double trench_y = trench()[1];
     require(trench_y > base && trench_y < land_height,
             "Trench position",
             "the trench (on the circle) must lie between the base and the "
@@ -155,6 +153,16 @@ namespace lithostress
   }
 
   template <int dim>
+  Point<2>
+  SubductionZone<dim>::trench() const
+  {
+    return Point<2>(trench_x,
+                    centre[1] +
+                      std::sqrt(radius * radius - (trench_x - centre[0]) *
+                                                    (trench_x - centre[0])));
+  }
+
+  template <int dim>
   double
   SubductionZone<dim>::x_on_circle(const double y, const double r) const
   {
@@ -166,9 +174,7 @@ namespace lithostress
   double
   SubductionZone<dim>::land_surface(const double x) const
   {
-    const double trench_y =
-      centre[1] + std::sqrt(radius * radius -
-                            (trench_x - centre[0]) * (trench_x - centre[0]));
+    const double trench_y = trench()[1];
     if (x >= coast_x)
       return land_height;
     return trench_y +
@@ -181,10 +187,8 @@ namespace lithostress
   {
     // Bisection in y along the circle: g(y) = y - (land(x(y)) - depth)
     // is positive at the trench and negative at the base.
-    const double trench_y =
-      centre[1] + std::sqrt(radius * radius -
-                            (trench_x - centre[0]) * (trench_x - centre[0]));
-    const auto g = [&](const double y) {
+    const double trench_y = trench()[1];
+    const auto   g        = [&](const double y) {
       return y - (land_surface(x_on_circle(y, radius)) - depth);
     };
     double hi = trench_y, lo = base;
@@ -210,12 +214,9 @@ namespace lithostress
                         std::lround(std::abs(length) / cell_size)));
     };
     const double r_crust = radius - oceanic_crust, r_lid = radius - oceanic_lid;
-    const double trench_y =
-      centre[1] + std::sqrt(radius * radius -
-                            (trench_x - centre[0]) * (trench_x - centre[0]));
-    const Point<2> trench(trench_x, trench_y);
-    const Point<2> p1 = crossing(continental_elastic),
-                   p2 = crossing(continental_crust);
+    const Point<2> trench = this->trench();
+    const Point<2> p1     = crossing(continental_elastic),
+                   p2     = crossing(continental_crust);
     // Stations across the slab: radial lines through the apex, the
     // trench and the two crossings (unit directions from the centre).
     const auto unit = [&](const Point<2> &p) {
@@ -438,10 +439,8 @@ namespace lithostress
   SubductionZone<dim>::fault_traces() const
   {
     FaultTrace trace;
-    trace.name = "plate_boundary";
-    trace.top_y =
-      centre[1] + std::sqrt(radius * radius -
-                            (trench_x - centre[0]) * (trench_x - centre[0]));
+    trace.name           = "plate_boundary";
+    trace.top_y          = trench()[1];
     trace.surface_x      = trench_x;
     trace.direction      = 1;
     trace.dip            = std::asin((trench_x - centre[0]) / radius);

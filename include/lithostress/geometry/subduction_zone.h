@@ -48,6 +48,10 @@ namespace lithostress
     fault_traces() const override;
 
   private:
+    /** The trench axis: the circle at the Trench position. */
+    Point<2>
+    trench() const;
+
     /** x where the circle of radius @p r about the centre has height
      * @p y (the branch right of the centre). */
     double
