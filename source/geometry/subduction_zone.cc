@@ -192,6 +192,8 @@ namespace lithostress
       return y - (land_surface(x_on_circle(y, radius)) - depth);
     };
     double hi = trench_y, lo = base;
+    // No crossing above the base: a point below it, which parse_parameters
+    // refuses.
     if (g(hi) * g(lo) > 0)
       return Point<2>(x_on_circle(base, radius), base - 1);
     for (unsigned int i = 0; i < 200; ++i)

@@ -92,13 +92,6 @@ namespace lithostress
     void
     create(Triangulation<2> &triangulation, const double tolerance) const;
 
-    /** The number of cells so far. */
-    unsigned int
-    n_cells() const
-    {
-      return cells.size();
-    }
-
   private:
     std::vector<Point<2>> vertices;
     std::vector<std::pair<std::array<unsigned int, 4>, types::material_id>>
