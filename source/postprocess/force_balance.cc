@@ -14,13 +14,30 @@ namespace lithostress
 {
   namespace
   {
-    /** A short name of a load: its description up to the first ':' or '('. */
+    /** A short name of a load: its description up to the first ':',
+     * without parenthesised details, the pieces between them joined by
+     * commas ("tractions on top (normal ...) base (...)" gives "tractions
+     * on top, base"). */
     std::string
     short_name(const std::string &description)
     {
-      std::string name = description.substr(0, description.find_first_of(":("));
-      while (!name.empty() && name.back() == ' ')
-        name.pop_back();
+      const std::string text = description.substr(0, description.find(':'));
+      std::vector<std::string> pieces(1);
+      int                      depth = 0;
+      for (const char c : text)
+        if (c == '(' && depth++ == 0)
+          pieces.emplace_back();
+        else if (c == ')' && depth > 0)
+          --depth;
+        else if (depth == 0)
+          pieces.back() += c;
+      std::string name;
+      for (const std::string &piece : pieces)
+        {
+          const std::string trimmed = Utilities::trim(piece);
+          if (!trimmed.empty())
+            name += (name.empty() ? "" : ", ") + trimmed;
+        }
       return name;
     }
   } // namespace
