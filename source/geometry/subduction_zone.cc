@@ -262,6 +262,22 @@ namespace lithostress
       count(radius * std::acos(station[0] * station[1])), n_upper, n_lower};
 
     BlockMesh blocks;
+    // A flat layer from x0 to x1 between the heights bottom and top.
+    const auto rectangle = [&](const double             x0,
+                               const double             x1,
+                               const double             bottom,
+                               const double             top,
+                               const unsigned int       n_across,
+                               const types::material_id material) {
+      const Point<2> a(x0, bottom), b(x1, bottom), c(x1, top), d(x0, top);
+      blocks.add_block(Curve::line(a, b),
+                       Curve::line(b, c),
+                       Curve::line(c, d),
+                       Curve::line(d, a),
+                       count(x1 - x0),
+                       n_across,
+                       material);
+    };
     // The oceanic plate seaward of the circle's top: flat layers.
     {
       const double       x0 = 0, x1 = centre[0];
@@ -272,15 +288,7 @@ namespace lithostress
       const unsigned int n[3]  = {n_crust, n_lid, n_mantle};
       for (unsigned int k = 0; k < 3; ++k)
         {
-          const Point<2> a(x0, ys[k + 1]), b(x1, ys[k + 1]), c(x1, ys[k]),
-            d(x0, ys[k]);
-          blocks.add_block(Curve::line(a, b),
-                           Curve::line(b, c),
-                           Curve::line(c, d),
-                           Curve::line(d, a),
-                           count(x1 - x0),
-                           n[k],
-                           k);
+          rectangle(x0, x1, ys[k + 1], ys[k], n[k], k);
         }
     }
     // The slab between consecutive stations: crust, lid and mantle.
@@ -354,16 +362,8 @@ namespace lithostress
                            count(coast_x - trench_x),
                            n[k],
                            3 + k);
-          const Point<2> a(coast_x, k < 2 ? tops[k + 1] : base),
-            b(width, k < 2 ? tops[k + 1] : base), c(width, tops[k]),
-            d(coast_x, tops[k]);
-          blocks.add_block(Curve::line(a, b),
-                           Curve::line(b, c),
-                           Curve::line(c, d),
-                           Curve::line(d, a),
-                           count(width - coast_x),
-                           n[k],
-                           3 + k);
+          rectangle(
+            coast_x, width, k < 2 ? tops[k + 1] : base, tops[k], n[k], 3 + k);
         }
     }
 
