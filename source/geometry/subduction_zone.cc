@@ -318,24 +318,23 @@ namespace lithostress
       }
     // The slab's end, from the last station to the base.
     {
-      const Tensor<1, 2> &u = station[3];
-      const Point<2>      b_outer(x_on_circle(base, radius), base),
-        b_crust(x_on_circle(base, r_crust), base),
-        b_lid(x_on_circle(base, r_lid), base);
-      blocks.add_block(arc(on(u, r_crust), b_crust),
-                       Curve::line(b_crust, b_outer),
-                       arc(b_outer, on(u, radius)),
-                       Curve::line(on(u, radius), on(u, r_crust)),
-                       n_mantle,
-                       n_crust,
-                       0);
-      blocks.add_block(arc(on(u, r_lid), b_lid),
-                       Curve::line(b_lid, b_crust),
-                       arc(b_crust, on(u, r_crust)),
-                       Curve::line(on(u, r_crust), on(u, r_lid)),
-                       n_mantle,
-                       n_lid,
-                       1);
+      const Tensor<1, 2> &u    = station[3];
+      const double        r[3] = {radius, r_crust, r_lid};
+      const unsigned int  n[2] = {n_crust, n_lid};
+      for (unsigned int layer = 0; layer < 2; ++layer)
+        {
+          const double   outer = r[layer], inner = r[layer + 1];
+          const Point<2> b_outer(x_on_circle(base, outer), base),
+            b_inner(x_on_circle(base, inner), base);
+          blocks.add_block(arc(on(u, inner), b_inner),
+                           Curve::line(b_inner, b_outer),
+                           arc(b_outer, on(u, outer)),
+                           Curve::line(on(u, outer), on(u, inner)),
+                           n_mantle,
+                           n[layer],
+                           layer);
+        }
+      const Point<2> b_lid(x_on_circle(base, r_lid), base);
       blocks.add_triangle(Curve::line(on(u, r_lid), at_base(u)),
                           Curve::line(at_base(u), b_lid),
                           arc(b_lid, on(u, r_lid)),
