@@ -423,8 +423,10 @@ namespace lithostress
   {
     TimerOutput::Scope t(*timer, "assemble");
     Timer              clock(communicator, true);
-    // Mesh integrals of the loads once per mesh, not once per time step.
-    if (loads_prepared_for != mesh_version)
+    // Mesh integrals of the loads once per mesh, not once per time step;
+    // a slab pull that balances the other loads measures them there.
+    const bool new_mesh = loads_prepared_for != mesh_version;
+    if (new_mesh)
       for (const auto &load : loads.loads())
         load->prepare_for_mesh(triangulation,
                                fe_space->mapping(),
@@ -432,6 +434,22 @@ namespace lithostress
     loads_prepared_for = mesh_version;
     for (const auto &load : loads.loads())
       load->set_time(time);
+    if (new_mesh && loads.balances_vertical_loads())
+      {
+        TrilinosWrappers::MPI::Vector at_rest(dof_handler.locally_owned_dofs(),
+                                              system.locally_relevant,
+                                              communicator);
+        std::vector<Tensor<1, dim>>   resultants;
+        for (const auto &load : compute_force_balance(dof_handler,
+                                                      *fe_space,
+                                                      *stress_model,
+                                                      loads,
+                                                      prescribed_displacement,
+                                                      at_rest)
+                                  .loads)
+          resultants.push_back(load.second);
+        loads.balance(resultants);
+      }
     ElasticAssembler<dim> assembler(*fe_space, *stress_model, loads);
     assembler.set_history_strain(history_strain);
     // The matrix only where the operator changed (the time loop assembles

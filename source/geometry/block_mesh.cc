@@ -40,6 +40,18 @@ namespace lithostress
     return {[f, s0, s1](const double s) { return f(s0 + s * (s1 - s0)); }};
   }
 
+  SectionCurve
+  SectionCurve::join(const SectionCurve &first,
+                     const SectionCurve &second,
+                     const double        fraction)
+  {
+    const auto f = first.at, g = second.at;
+    return {[f, g, fraction](const double s) {
+      return s <= fraction ? f(s / fraction)
+                           : g((s - fraction) / (1 - fraction));
+    }};
+  }
+
   void
   BlockMesh::add_block(const SectionCurve      &side0,
                        const SectionCurve      &side1,

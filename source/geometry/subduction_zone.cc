@@ -43,12 +43,13 @@ namespace lithostress
                       "x of the trench axis, where the continental surface "
                       "meets the circle (10 km deep with the defaults).");
     prm.declare_entry("Coast position",
-                      "700",
+                      "575",
                       Patterns::Double(),
                       "x where the continental surface, rising linearly "
                       "from the trench, reaches the Land height (the thesis "
-                      "does not state it); it must lie right of where the "
-                      "plate boundary meets the base.");
+                      "does not state it); between the trench and the right "
+                      "edge. The continental layers follow the surface at "
+                      "constant depth, so they kink below the coast.");
     prm.declare_entry("Land height",
                       "0",
                       Patterns::Double(),
@@ -139,17 +140,25 @@ namespace lithostress
             "Trench position",
             "the trench (on the circle) must lie between the base and the "
             "land");
-    require(coast_x > x_on_circle(base, radius) && coast_x < width,
+    require(coast_x > trench_x && coast_x < width,
             "Coast position",
-            "must lie right of where the plate boundary meets the base (" +
-              std::to_string(x_on_circle(base, radius) / scale) +
-              ") and left of the right edge");
+            "must lie between the trench and the right edge");
     const double deepest = crossing(continental_crust)[1];
     require(deepest > base && crossing(continental_elastic)[1] > deepest &&
               crossing(continental_elastic)[1] < trench_y,
             "Continental crust thickness",
             "the continental layers must cross the plate boundary between "
             "the trench and the base");
+    for (const double x : {crossing(continental_elastic)[0],
+                           crossing(continental_crust)[0],
+                           x_on_circle(base, radius)})
+      require(std::abs(coast_x - x) > 1e-3 * width,
+              "Coast position",
+              "lies where a continental layer boundary meets the plate "
+              "boundary (x = " +
+                std::to_string(x / scale) +
+                "); move it off that point, the blocks there would be "
+                "degenerate");
   }
 
   template <int dim>
@@ -246,18 +255,19 @@ namespace lithostress
       return radius * std::acos(std::clamp(unit(a) * unit(b), -1.0, 1.0));
     };
     const Point<2>     slab_base(x_on_circle(base, radius), base);
-    const unsigned int n_crust = count(oceanic_crust),
-                       n_lid   = count(oceanic_lid - oceanic_crust),
-                       n_upper = std::max(count(continental_elastic),
-                                          count(arc_length(trench, p1))),
-                       n_lower = std::max(count(continental_crust -
-                                                continental_elastic),
-                                          count(arc_length(p1, p2)));
-    unsigned int n_mantle =
+    const unsigned int n_crust    = count(oceanic_crust),
+                       n_lid      = count(oceanic_lid - oceanic_crust);
+    unsigned int n_continental[3] = {
+      std::max(count(continental_elastic), count(arc_length(trench, p1))),
+      std::max(count(continental_crust - continental_elastic),
+               count(arc_length(p1, p2))),
       std::max({count(sea_floor - oceanic_lid - base),
                 count(land_height - continental_crust - base),
-                count(arc_length(p2, slab_base))});
-    n_mantle += n_mantle % 2;
+                count(arc_length(p2, slab_base))})};
+    n_continental[2] += n_continental[2] % 2;
+    const unsigned int n_wedge = count(coast_x - trench_x);
+    const unsigned int n_upper = n_continental[0], n_lower = n_continental[1],
+                       n_mantle        = n_continental[2];
     const unsigned int n_along_slab[3] = {
       count(radius * std::acos(station[0] * station[1])), n_upper, n_lower};
 
@@ -341,28 +351,71 @@ namespace lithostress
                           n_mantle,
                           2);
     }
-    // The continental plate: the wedge between the plate boundary and
-    // the coast, then flat layers to the right edge.
+    // The continental plate. Each layer (upper crust, lower crust, mantle)
+    // lies between the plate boundary's arc from left[k] to left[k + 1]
+    // and the right edge; its top and bottom follow the surface, which
+    // rises from the trench to the coast and is flat beyond, so they kink
+    // below the coast. A layer whose arc ends left of the coast is a wedge
+    // block to the coast and a flat block beyond; the layer whose arc spans
+    // the coast is one block whose top kinks (a vertex at the kink); the
+    // layers below it are one block each, with as many cells along as the
+    // wedge and flat blocks above together.
     {
-      const Point<2>     b_outer(x_on_circle(base, radius), base);
-      const double       tops[3] = {land_height,
-                                    land_height - continental_elastic,
-                                    land_height - continental_crust};
-      const Point<2>     left[4] = {trench, p1, p2, b_outer};
-      const unsigned int n[3]    = {n_upper, n_lower, n_mantle};
+      const Point<2> b_outer(x_on_circle(base, radius), base);
+      const double   depth[3] = {0, continental_elastic, continental_crust};
+      const Point<2> left[4]  = {trench, p1, p2, b_outer};
+      const auto     top_at   = [&](const unsigned int k, const double x) {
+        return Point<2>(x, land_surface(x) - depth[k]);
+      };
+      const auto bottom_at = [&](const unsigned int k, const double x) {
+        return k < 2 ? top_at(k + 1, x) : Point<2>(x, base);
+      };
+      const unsigned int n_flat = count(width - coast_x);
       for (unsigned int k = 0; k < 3; ++k)
         {
-          const Point<2> coast_top(coast_x, tops[k]),
-            coast_bottom(coast_x, k < 2 ? tops[k + 1] : base);
-          blocks.add_block(Curve::line(left[k + 1], coast_bottom),
-                           Curve::line(coast_bottom, coast_top),
-                           Curve::line(coast_top, left[k]),
-                           arc(left[k], left[k + 1]),
-                           count(coast_x - trench_x),
-                           n[k],
-                           3 + k);
-          rectangle(
-            coast_x, width, k < 2 ? tops[k + 1] : base, tops[k], n[k], 3 + k);
+          const types::material_id material = 3 + k;
+          if (coast_x > left[k + 1][0])
+            {
+              const Point<2> coast_top    = top_at(k, coast_x),
+                             coast_bottom = bottom_at(k, coast_x);
+              blocks.add_block(Curve::line(left[k + 1], coast_bottom),
+                               Curve::line(coast_bottom, coast_top),
+                               Curve::line(coast_top, left[k]),
+                               arc(left[k], left[k + 1]),
+                               n_wedge,
+                               n_continental[k],
+                               material);
+              blocks.add_block(Curve::line(coast_bottom, bottom_at(k, width)),
+                               Curve::line(bottom_at(k, width),
+                                           top_at(k, width)),
+                               Curve::line(top_at(k, width), coast_top),
+                               Curve::line(coast_top, coast_bottom),
+                               n_flat,
+                               n_continental[k],
+                               material);
+            }
+          else if (coast_x > left[k][0])
+            {
+              const Point<2> kink = top_at(k, coast_x);
+              blocks.add_block(Curve::line(left[k + 1], bottom_at(k, width)),
+                               Curve::line(bottom_at(k, width),
+                                           top_at(k, width)),
+                               Curve::join(Curve::line(top_at(k, width), kink),
+                                           Curve::line(kink, left[k]),
+                                           n_flat / double(n_flat + n_wedge)),
+                               arc(left[k], left[k + 1]),
+                               n_flat + n_wedge,
+                               n_continental[k],
+                               material);
+            }
+          else
+            blocks.add_block(Curve::line(left[k + 1], bottom_at(k, width)),
+                             Curve::line(bottom_at(k, width), top_at(k, width)),
+                             Curve::line(top_at(k, width), left[k]),
+                             arc(left[k], left[k + 1]),
+                             n_flat + n_wedge,
+                             n_continental[k],
+                             material);
         }
     }
 

@@ -183,54 +183,16 @@ namespace lithostress
     const Mapping<dim>        &mapping,
     const Quadrature<dim - 1> &face_quadrature)
   {
-    const FE_Q<dim>   fe(1);
-    FEFaceValues<dim> face_values(mapping,
-                                  fe,
-                                  face_quadrature,
-                                  update_quadrature_points | update_JxW_values);
-    const MPI_Comm    communicator = tria.get_communicator();
     for (Part &part : parts)
       if (part.by_resultant)
-        {
-          double integral = 0;
-          // Collected first and checked on every rank, so that no rank
-          // leaves the collective sum below alone.
-          double lowest = 0;
-          on_all_ranks(communicator, [&]() {
-            for (const auto &cell : tria.active_cell_iterators())
-              if (cell->is_locally_owned())
-                for (const unsigned int f : cell->face_indices())
-                  if (cell->face(f)->at_boundary() &&
-                      cell->face(f)->boundary_id() == part.id)
-                    {
-                      face_values.reinit(cell, f);
-                      for (const unsigned int q :
-                           face_values.quadrature_point_indices())
-                        {
-                          const double w = part.profile->value(
-                            face_values.quadrature_point(q));
-                          if (!(w >= 0))
-                            lowest =
-                              std::isnan(w)
-                                ? -std::numeric_limits<double>::infinity()
-                                : std::min(lowest, w);
-                          integral += w * face_values.JxW(q);
-                        }
-                    }
-          });
-          lowest = Utilities::MPI::min(lowest, communicator);
-          if (lowest < 0 || std::isnan(lowest))
-            throw_input_error("Loads/Tractions/" + part.name +
-                                "/Resultant profile",
-                              "is negative (" + std::to_string(lowest) +
-                                ") on the part");
-          part.profile_integral = Utilities::MPI::sum(integral, communicator);
-          if (!(part.profile_integral > 0))
-            throw_input_error("Loads/Tractions/" + part.name +
-                                "/Resultant profile",
-                              "integrates to zero over the part: the "
-                              "resultant cannot be spread");
-        }
+        part.profile_integral =
+          boundary_profile_integral(tria,
+                                    mapping,
+                                    face_quadrature,
+                                    part.id,
+                                    *part.profile,
+                                    "Loads/Tractions/" + part.name +
+                                      "/Resultant profile");
   }
 
   template <int dim>

@@ -1,5 +1,12 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/fe/fe_q.h>
+
 #include <lithostress/base/input_error.h>
+#include <lithostress/base/parsed_expression.h>
 #include <lithostress/loads/load.h>
+
+#include <cmath>
+#include <limits>
 
 namespace lithostress
 {
@@ -105,6 +112,66 @@ namespace lithostress
     return false;
   }
 
+  template <int dim>
+  double
+  boundary_profile_integral(const Triangulation<dim>    &tria,
+                            const Mapping<dim>          &mapping,
+                            const Quadrature<dim - 1>   &face_quadrature,
+                            const types::boundary_id     id,
+                            const ParsedExpression<dim> &profile,
+                            const std::string           &entry)
+  {
+    const FE_Q<dim>   fe(1);
+    FEFaceValues<dim> face_values(mapping,
+                                  fe,
+                                  face_quadrature,
+                                  update_quadrature_points | update_JxW_values);
+    const MPI_Comm    communicator = tria.get_communicator();
+    double            integral     = 0;
+    // Collected first and checked on every rank, so that no rank leaves
+    // the collective sums below alone.
+    double lowest = 0;
+    on_all_ranks(communicator, [&]() {
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+              {
+                face_values.reinit(cell, f);
+                for (const unsigned int q :
+                     face_values.quadrature_point_indices())
+                  {
+                    const double w =
+                      profile.value(face_values.quadrature_point(q));
+                    if (!(w >= 0))
+                      lowest = std::isnan(w)
+                                 ? -std::numeric_limits<double>::infinity()
+                                 : std::min(lowest, w);
+                    integral += w * face_values.JxW(q);
+                  }
+              }
+    });
+    lowest = Utilities::MPI::min(lowest, communicator);
+    if (lowest < 0 || std::isnan(lowest))
+      throw_input_error(entry,
+                        "is negative (" + std::to_string(lowest) +
+                          ") on the part");
+    integral = Utilities::MPI::sum(integral, communicator);
+    if (!(integral > 0))
+      throw_input_error(entry,
+                        "integrates to zero over the part: the resultant "
+                        "cannot be spread");
+    return integral;
+  }
+
+  template double
+  boundary_profile_integral<2>(const Triangulation<2> &,
+                               const Mapping<2> &,
+                               const Quadrature<1> &,
+                               const types::boundary_id,
+                               const ParsedExpression<2> &,
+                               const std::string &);
   template bool
   point_in_mesh<2>(const Triangulation<2> &,
                    const Mapping<2> &,

@@ -5,6 +5,7 @@
 #include <lithostress/loads/isostatic_restoring_force.h>
 #include <lithostress/loads/line_force.h>
 #include <lithostress/loads/load_collection.h>
+#include <lithostress/loads/slab_pull.h>
 #include <lithostress/loads/thermal_strain.h>
 
 namespace lithostress
@@ -21,6 +22,7 @@ namespace lithostress
     BoundaryTraction<dim>::declare_parameters(prm, first_pass);
     IsostaticRestoringForce<dim>::declare_parameters(prm);
     LineForce<dim>::declare_parameters(prm);
+    SlabPull<dim>::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -59,7 +61,36 @@ namespace lithostress
     line_force->parse_parameters(prm, model);
     if (!line_force->empty())
       active.push_back(std::move(line_force));
+    auto slab_pull = std::make_unique<SlabPull<dim>>();
+    if (slab_pull->parse_parameters(prm, model))
+      active.push_back(std::move(slab_pull));
     prm.leave_subsection();
+  }
+
+  template <int dim>
+  bool
+  LoadCollection<dim>::balances_vertical_loads() const
+  {
+    for (const auto &load : active)
+      if (const auto *pull = dynamic_cast<const SlabPull<dim> *>(load.get()))
+        if (pull->balances_vertical_loads())
+          return true;
+    return false;
+  }
+
+  template <int dim>
+  void
+  LoadCollection<dim>::balance(const std::vector<Tensor<1, dim>> &resultants)
+  {
+    AssertDimension(resultants.size(), active.size());
+    double upthrust = 0;
+    for (unsigned int l = 0; l < active.size(); ++l)
+      if (dynamic_cast<const SlabPull<dim> *>(active[l].get()) == nullptr)
+        upthrust += resultants[l][dim - 1];
+    for (const auto &load : active)
+      if (auto *pull = dynamic_cast<SlabPull<dim> *>(load.get()))
+        if (pull->balances_vertical_loads())
+          pull->balance(upthrust);
   }
 
   template <int dim>

@@ -77,7 +77,7 @@ expected = {
     "gmsh_fault_inside": "Faults/Names>: the fault <fault> does not split the body",
     "gmsh_fault_format4": "Geometry/Gmsh/Fault curves>: fault curves need a mesh file in MSH format 2",
     "subduction_circle_off_sea_floor": "Geometry/Subduction zone/Plate boundary centre>: the circle must touch the sea floor at its top",
-    "subduction_coast_before_slab": "Geometry/Subduction zone/Coast position>: must lie right of where the plate boundary meets the base",
+    "subduction_coast_before_trench": "Geometry/Subduction zone/Coast position>: must lie between the trench and the right edge",
     "gmsh_fault_unknown_curve": "Geometry/Gmsh/Fault curves>: the mesh has no physical curve <scarp>",
     "rigid_edge_pinned_corner": "Boundary conditions/right/x>: is `rigid`, but another part already prescribes",
     # Broken mesh files and command lines.

@@ -5,10 +5,13 @@ zone; issue 17), checked as geometry before any physics:
    and quadratures of the section as defined (flat oceanic layers, the
    slab's layers between circles about (445.456, -305) km of radius 300,
    295 and 270 km, the continental layers 10 and 35 km below a surface
-   rising linearly from the trench (500, -10) km to the coast (700, 0) km,
-   all above the base at -95 km and right of the plate boundary): the
-   gravity load of a run where one region has density 1 and the others 0
-   is -g times its area. Measured within 4e-8 on the coarse mesh (510
+   rising linearly from the trench (500, -10) km to the coast, all above
+   the base at -95 km and right of the plate boundary): the gravity load
+   of a run where one region has density 1 and the others 0 is -g times
+   its area. For the three layouts of the continental blocks: the coast at
+   575 km (the default: the lower crust's block spans the coast, its top
+   kinks), 620 km (the mantle's block spans it) and 700 km (right of the
+   slab: every layer a wedge and a flat block). Measured within 4e-8 on the coarse mesh (510
    cells; what is left is the Q2 mapping of the cells next to the arcs);
    tolerance 1e-6, while a region given the wrong material id, or a layer
    boundary off its curve by a cell, changes an area by > 0.1 %.
@@ -32,7 +35,8 @@ PRM = "subduction/uniform_strain.prm"
 REGIONS = ["oceanic_crust", "oceanic_lid", "oceanic_mantle", "upper_crust", "lower_crust",
            "continental_mantle"]
 CX, CY, R = 445.456e3, -305e3, 300e3
-W, BASE, SEA, XT, XC, LAND = 920e3, -95e3, -5e3, 500e3, 700e3, 0.0
+W, BASE, SEA, XT, LAND = 920e3, -95e3, -5e3, 500e3, 0.0
+XC = 575e3
 TC, TE, CE, CC = 5e3, 30e3, 10e3, 35e3
 YT = CY + math.sqrt(R * R - (XT - CX) ** 2)
 
@@ -88,28 +92,33 @@ def crossings(*depths):
     return out
 
 
-exact = {
-    "oceanic_crust": CX * TC + segment(R) - segment(R - TC),
-    "oceanic_lid": CX * (TE - TC) + segment(R - TC) - segment(R - TE),
-    "oceanic_mantle": CX * (SEA - TE - BASE) + segment(R - TE),
-    "upper_crust": continental(0.0, CE),
-    "lower_crust": continental(CE, CC),
-    "continental_mantle": continental(CC, None),
-}
 G = 9.81
 worst = 0.0
-for region in REGIONS:
-    out = os.path.abspath("output_subduction_area_%s" % region)
-    sets = ["Mesh refinement/Number of cycles=1", "Output/Force balance=true",
-            "Loads/Gravity/Enabled=true", "Output/Figures/Enabled=false",
-            "Output/Write ParaView files=false"]
-    sets += ["Materials/%s/Density=%d" % (r, 1 if r == region else 0) for r in REGIONS]
-    run(PRM, out, 1, sets)
-    rows = read_csv(os.path.join(out, "force_balance.csv"))
-    area = -[r for r in rows if r["kind"] == "load"][0]["F_y"] / G
-    worst = max(worst, abs(area - exact[region]) / exact[region])
-    check(abs(area - exact[region]) <= 1e-6 * exact[region],
-          "%s: area %.6f km^2 (exact %.6f km^2)" % (region, area / 1e6, exact[region] / 1e6))
+for coast in (575e3, 620e3, 700e3):
+    XC = coast
+    exact = {
+        "oceanic_crust": CX * TC + segment(R) - segment(R - TC),
+        "oceanic_lid": CX * (TE - TC) + segment(R - TC) - segment(R - TE),
+        "oceanic_mantle": CX * (SEA - TE - BASE) + segment(R - TE),
+        "upper_crust": continental(0.0, CE),
+        "lower_crust": continental(CE, CC),
+        "continental_mantle": continental(CC, None),
+    }
+    for region in REGIONS:
+        out = os.path.abspath("output_subduction_area_%s" % region)
+        sets = ["Mesh refinement/Number of cycles=1", "Output/Force balance=true",
+                "Loads/Gravity/Enabled=true", "Output/Figures/Enabled=false",
+                "Output/Write ParaView files=false",
+                "Geometry/Subduction zone/Coast position=%g" % (coast / 1e3)]
+        sets += ["Materials/%s/Density=%d" % (r, 1 if r == region else 0) for r in REGIONS]
+        run(PRM, out, 1, sets)
+        rows = read_csv(os.path.join(out, "force_balance.csv"))
+        area = -[r for r in rows if r["kind"] == "load"][0]["F_y"] / G
+        worst = max(worst, abs(area - exact[region]) / exact[region])
+        check(abs(area - exact[region]) <= 1e-6 * exact[region],
+              "coast %g km, %s: area %.6f km^2 (exact %.6f km^2)"
+              % (coast / 1e3, region, area / 1e6, exact[region] / 1e6))
+XC = 575e3
 
 E1, E2 = 1e-4, -5e-5
 E, NU = 0.85e11, 0.25

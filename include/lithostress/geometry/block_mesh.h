@@ -35,6 +35,14 @@ namespace lithostress
     SectionCurve
     piece(const double s0, const double s1) const;
 
+    /** @p first then @p second (which starts where @p first ends), with
+     * the corner at parameter @p fraction: a block side of n cells whose
+     * first n·fraction cells lie on @p first has a vertex at the corner. */
+    static SectionCurve
+    join(const SectionCurve &first,
+         const SectionCurve &second,
+         const double        fraction);
+
     Point<2>
     start() const
     {

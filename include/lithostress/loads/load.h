@@ -41,6 +41,26 @@ namespace lithostress
     boundary_id(const std::string &name, const std::string &entry) const;
   };
 
+  template <int dim>
+  class ParsedExpression;
+
+  /**
+   * The integral ∫ w ds of the weight @p profile over boundary part @p id,
+   * with the assembly's @p mapping and @p face_quadrature, summed over all
+   * ranks: what a resultant force F is divided by to spread it as the
+   * traction t = F w / ∫ w ds (slab pull, thesis §7.4). InputError naming
+   * @p entry if w is negative or not finite on the part, or integrates to
+   * zero.
+   */
+  template <int dim>
+  double
+  boundary_profile_integral(const Triangulation<dim>    &tria,
+                            const Mapping<dim>          &mapping,
+                            const Quadrature<dim - 1>   &face_quadrature,
+                            const types::boundary_id     id,
+                            const ParsedExpression<dim> &profile,
+                            const std::string           &entry);
+
   /** Whether @p p lies in the coarse mesh of @p tria (through @p mapping). */
   template <int dim>
   bool

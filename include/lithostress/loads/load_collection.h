@@ -56,6 +56,20 @@ namespace lithostress
     bool
     stiffness_is_vertical_springs() const;
 
+    /** Whether a load (the slab pull) is set by the balance of the others'
+     * vertical forces, so that balance() must be called on every mesh. */
+    bool
+    balances_vertical_loads() const;
+
+    /**
+     * Give the loads that balance the others (SlabPull with `Vertical force
+     * = balance`) the net vertical force of the rest: @p resultants are the
+     * loads' resultants [N/m] in the order of loads(), measured at zero
+     * displacement (so that springs contribute nothing).
+     */
+    void
+    balance(const std::vector<Tensor<1, dim>> &resultants);
+
   private:
     std::vector<std::unique_ptr<Load<dim>>> active;
     bool                                    stripped          = false;
