@@ -62,6 +62,8 @@ namespace lithostress
       double       convergence_factor     = 1;
       bool         line_search            = true;
       double       linear_tolerance       = 1e-11;
+      /** Solve each Newton step directly (Amesos KLU) instead of GMRES. */
+      bool direct_solver = false;
     };
 
     static void

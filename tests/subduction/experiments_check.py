@@ -1,0 +1,189 @@
+"""Slab pull, plate coupling, basal shear and the thermal anomaly at a
+subduction zone (thesis §7.4-7.6; prm/subduction_slab_pull.prm,
+subduction_coupling.prm, subduction_basal_shear.prm, subduction_thermal.prm;
+issue 17), on robust features at coarse resolution (the 510-cell coarse
+mesh), elastic unless said:
+
+Slab pull (§7.4), base on a fluid:
+* The pull balances the model's own loads: its vertical force equals the
+  net upthrust of the stripped densities and the trench and outer-rise
+  pressures to 1e-9 (it is measured on the mesh it acts on), the fluid
+  base then carries no net force, and F_x = F_y / tan(dip) exactly.
+* 90 degrees: horizontal deviatoric tension in the continental crust at
+  the right edge, largest at 2-12 km depth (thesis: 31.5 MPa at 5-10 km);
+  an up-flexure of the ocean floor 50-100 km seaward of the trench
+  (thesis: ~75 km).
+* Lowering the dip from 63.43 to 26.57 degrees raises the horizontal pull:
+  the subducting plate's lid at the left edge becomes more tensional and
+  the overlying plate's upper crust at the right edge more compressive
+  (thesis: both by ~115 MPa), each by more than 20 MPa.
+Plate coupling (§7.5), 45 degrees:
+* Weakening the plate boundary from locked to k_s = 1e9 N/m (frictional,
+  mu = 0.1) lowers the overlying plate's regional compression (mean
+  sigma_xx over its crust and over its mantle at the right edge), by more
+  than 5 MPa each (thesis: 17.5 and 40 MPa), and makes the subducting
+  plate's lid more tensional; the slab slides down-dip beneath the
+  overlying plate (the hanging wall) all along the plate boundary.
+* The same answer on 1 and 2 ranks (1e-8 of the largest stress).
+Basal shear (§7.6.1):
+* The 3.5 MPa shear on the 260.3 km base of the overlying plate is a
+  resultant of -9.11e11 N/m along x, carried by the edges' reactions.
+* No Griffith failure anywhere (thesis: "insufficient to cause failure").
+* After 5 Myr the elastic upper crust at the right edge takes up more of
+  the regional tension there (its mean sigma_xx rises by more than 2 MPa:
+  stress amplification), while the continental mantle's deviatoric stress
+  there relaxes to less than half.
+Thermal anomaly (§7.6.2):
+* Above the anomaly's centre the top of the crust is in horizontal
+  tension and the plate deeper down in compression (thesis: 62 and
+  130 MPa).
+* The stress is linear in alpha: the linear reading of alpha gives exactly
+  3 times the volumetric reading's stresses (1e-8).
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from lithotest import SOURCE, check, finish, read_csv, run  # noqa: E402
+
+PRM_DIR = os.path.join(os.path.dirname(SOURCE), "prm")
+QUIET = ["Mesh refinement/Initial global refinement=0", "Output/Write ParaView files=false",
+         "Output/Figures/Enabled=false", "Time stepping/Enabled=false",
+         "Output/Stress-depth profiles=1, 659.7, 780, 919", "Output/Points per profile=96"]
+MPA = 1e-6
+
+
+def experiment(prm, label, sets=(), ranks=1, elastic=True):
+    out = os.path.abspath("output_subduction_%s_%d" % (label, ranks))
+    extra = QUIET if elastic else [s for s in QUIET if not s.startswith("Time stepping")]
+    run(os.path.join(PRM_DIR, prm), out, ranks, list(extra) + list(sets))
+    return out
+
+
+def profile(out, x):
+    return read_csv(os.path.join(out, "stress_depth_x%g.csv" % x))
+
+
+def band_mean(rows, key, top_km, bottom_km):
+    """Mean of key over depths top..bottom [km] (trapezoids)."""
+    pts = [(r["depth"] / 1e3, r[key]) for r in rows if top_km - 1e-9 <= r["depth"] / 1e3 <= bottom_km + 1e-9]
+    area = sum((b[0] - a[0]) * (a[1] + b[1]) / 2 for a, b in zip(pts, pts[1:]))
+    return area / (pts[-1][0] - pts[0][0])
+
+
+def loads(out):
+    return {r["name"]: r for r in read_csv(os.path.join(out, "force_balance.csv"))}
+
+
+# Slab pull.
+pull = {}
+for dip in (90, 63.43494882, 45, 26.56505118):
+    pull[dip] = experiment("subduction_slab_pull.prm", "slab_pull_%g" % round(dip),
+                           ["Loads/Slab pull/Dip=%.10g" % dip,
+                            "Output/Surface profile boundary=ocean_floor"])
+for dip, out in pull.items():
+    rows = loads(out)
+    slab = [r for n, r in rows.items() if n.startswith("slab pull")][0]
+    others = sum(r["F_y"] for n, r in rows.items()
+                 if r["kind"] == "load" and not n.startswith("slab pull"))
+    base = [r for n, r in rows.items() if n.startswith("isostatic")][0]
+    fx = -slab["F_y"] / math.tan(math.radians(dip)) if dip < 90 else 0.0
+    check(abs(slab["F_y"] + others) < 1e-9 * others and abs(base["F_y"]) < 1e-6 * others
+          and abs(slab["F_x"] - fx) < 1e-9 * others,
+          "dip %g: the slab pull (%.4e, %.4e) N/m balances the other loads' %.4e N/m upthrust; "
+          "the fluid base carries %.1e N/m" % (dip, slab["F_x"], slab["F_y"], others, base["F_y"]))
+
+right = profile(pull[90], 919)
+crust = [r for r in right if r["depth"] <= 35e3]
+top = max(crust, key=lambda r: r["deviatoric_xx"])
+check(top["deviatoric_xx"] > 10e6 and 2e3 <= top["depth"] <= 12e3,
+      "90 degrees: horizontal deviatoric tension in the continental crust at the right edge, "
+      "largest %.1f MPa at %.1f km (thesis 31.5 MPa at 5-10 km)"
+      % (top["deviatoric_xx"] * MPA, top["depth"] / 1e3))
+surface = [(r["x"], r["u_y"]) for r in read_csv(os.path.join(pull[90], "surface_profile.csv"))]
+crest = max(surface, key=lambda s: s[1])
+check(50e3 <= 500e3 - crest[0] <= 100e3,
+      "90 degrees: the ocean floor's up-flexure crest %.1f km seaward of the trench "
+      "(thesis ~75 km)" % ((500e3 - crest[0]) / 1e3))
+
+lid = {d: band_mean(profile(out, 1), "sigma_xx", 0, 30) for d, out in pull.items()}
+upper = {d: band_mean(profile(out, 919), "sigma_xx", 0, 10) for d, out in pull.items()}
+dips = sorted(pull, reverse=True)
+check(all(lid[a] < lid[b] for a, b in zip(dips, dips[1:]))
+      and all(upper[a] > upper[b] for a, b in zip(dips, dips[1:]))
+      and lid[dips[-1]] - lid[dips[1]] > 20e6 and upper[dips[1]] - upper[dips[-1]] > 20e6,
+      "lower dips pull harder: lid at the left edge %s MPa, upper crust at the right edge %s MPa "
+      "(dips %s)" % (", ".join("%.1f" % (lid[d] * MPA) for d in dips),
+                     ", ".join("%.1f" % (upper[d] * MPA) for d in dips),
+                     ", ".join("%.4g" % d for d in dips)))
+
+# Plate coupling.
+weak = {}
+for ranks in (1, 2):
+    weak[ranks] = experiment("subduction_coupling.prm", "coupling_1e9", ranks=ranks)
+locked = pull[45]
+fall_crust = (band_mean(profile(weak[1], 919), "sigma_xx", 0, 35)
+              - band_mean(profile(locked, 919), "sigma_xx", 0, 35))
+fall_mantle = (band_mean(profile(weak[1], 919), "sigma_xx", 35, 95)
+               - band_mean(profile(locked, 919), "sigma_xx", 35, 95))
+lid_change = (band_mean(profile(weak[1], 1), "sigma_xx", 0, 30)
+              - band_mean(profile(locked, 1), "sigma_xx", 0, 30))
+check(fall_crust > 5e6 and fall_mantle > 5e6 and lid_change > 5e6,
+      "coupling locked -> k_s 1e9 N/m: the overlying plate's regional compression falls by "
+      "%.1f MPa in the crust and %.1f MPa in the mantle (thesis 17.5, 40), the subducting lid "
+      "becomes %.1f MPa more tensional" % (fall_crust * MPA, fall_mantle * MPA, lid_change * MPA))
+fault = read_csv(os.path.join(weak[1], "fault.csv"))
+slip = [p["slip"] for p in fault]
+check(max(slip) < 0,
+      "coupling: the slab slides down-dip beneath the overlying plate everywhere along the "
+      "plate boundary (slip of the hanging wall, the overlying plate, %.1f to %.1f m: up-dip)"
+      % (min(slip), max(slip)))
+largest, difference = 0.0, 0.0
+for x in (1, 659.7, 780, 919):
+    a, b = profile(weak[1], x), profile(weak[2], x)
+    for ra, rb in zip(a, b):
+        for key in ("sigma_xx", "sigma_yy", "sigma_xy"):
+            largest = max(largest, abs(ra[key]))
+            difference = max(difference, abs(ra[key] - rb[key]))
+check(difference <= 1e-8 * largest,
+      "coupling: 1 and 2 ranks agree to %.1e of the largest stress" % (difference / largest))
+
+# Basal shear.
+shear = experiment("subduction_basal_shear.prm", "basal_shear")
+rows = loads(shear)
+traction = [r for n, r in rows.items() if n.startswith("tractions")][0]
+reactions = sum(r["F_x"] for r in rows.values() if r["kind"] == "reaction")
+applied = -3.5e6 * (920e3 - 659.7e3)
+check(abs(traction["F_x"] - applied) < 2e-3 * abs(applied) and abs(reactions + traction["F_x"])
+      < 1e-6 * abs(applied),
+      "basal shear: resultant %.4e N/m along x (3.5 MPa over %.1f km: %.4e), balanced by the "
+      "edges (%.4e)" % (traction["F_x"], (920e3 - 659.7e3) / 1e3, applied, reactions))
+failed = [r for x in (1, 659.7, 780, 919) for r in profile(shear, x) if r["griffith_C"] <= 0]
+check(not failed, "basal shear: no Griffith failure on the four profiles")
+relaxed = experiment("subduction_basal_shear.prm", "basal_shear_5Myr", elastic=False)
+force_before = band_mean(profile(shear, 919), "sigma_xx", 0, 10)
+force_after = band_mean(profile(relaxed, 919), "sigma_xx", 0, 10)
+mantle_before = abs(band_mean(profile(shear, 919), "deviatoric_xx", 40, 90))
+mantle_after = abs(band_mean(profile(relaxed, 919), "deviatoric_xx", 40, 90))
+check(force_after - force_before > 2e6 and mantle_after < 0.5 * mantle_before,
+      "basal shear after 5 Myr: the upper crust's mean horizontal stress at the right edge "
+      "moves towards the regional tension there, %.2f -> %.2f MPa, as the mantle's deviatoric "
+      "stress relaxes, %.2f -> %.2f MPa"
+      % (force_before * MPA, force_after * MPA, mantle_before * MPA, mantle_after * MPA))
+
+# Thermal anomaly.
+hot = experiment("subduction_thermal.prm", "thermal")
+hot_v = experiment("subduction_thermal.prm", "thermal_volumetric",
+                   ["Loads/Thermal strain/Coefficient type=volumetric"])
+above = profile(hot, 780)
+deepest = min(above, key=lambda r: r["sigma_xx"])
+check(above[0]["sigma_xx"] > 20e6 and deepest["sigma_xx"] < -50e6 and deepest["depth"] > 20e3,
+      "thermal: above the anomaly's centre %.1f MPa tension at the top, %.1f MPa compression "
+      "at %.1f km (thesis 62 and 130 MPa)"
+      % (above[0]["sigma_xx"] * MPA, -deepest["sigma_xx"] * MPA, deepest["depth"] / 1e3))
+ratio_error = max(abs(a["sigma_xx"] - 3 * b["sigma_xx"]) for a, b in zip(above, profile(hot_v, 780)))
+check(ratio_error <= 1e-8 * abs(deepest["sigma_xx"]),
+      "thermal: the linear reading of alpha gives 3 x the volumetric reading's stress "
+      "(to %.1e of the largest)" % (ratio_error / abs(deepest["sigma_xx"])))
+finish()
