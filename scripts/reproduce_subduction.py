@@ -31,6 +31,7 @@ is measured is in the `quantity` text and in doc/subduction.md.
 
 Usage: reproduce_subduction.py OUTDIR [--binary PATH] [--global-refinement N]
                                [--only NAME,...] [--elastic-only] [--ranks N]
+                               [--width 920]
 """
 import argparse
 import csv
@@ -47,11 +48,17 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import vtu_reader  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# The right edge (Geometry/Subduction zone/Width; --width changes it).
 WIDTH_KM = 920.0
 TRENCH_KM = 500.0
 PLATE_BOUNDARY_BASE_KM = 659.7
 A_A_KM = 659.7 - 484.3
-PROFILES = "1, 300, 500, 580, 659.7, 780, 919"
+
+
+def profiles():
+    """x [km] of the stress-depth profiles: 1 km inside the edges, and
+    across the section."""
+    return "1, 300, 500, 580, 659.7, 780, %g" % (WIDTH_KM - 1)
 
 DIPS = {"90": 90, "63": 63.43494882, "45": 45, "27": 26.56505118}
 CONFIGS = (
@@ -75,8 +82,10 @@ def run(binary, prm, directory, sets, elastic, ranks):
                ["mpirun", "-np", str(ranks), binary])
     command += [os.path.join(ROOT, "prm", prm),
                 "--set", "Output directory=" + directory,
-                "--set", "Output/Stress-depth profiles=" + PROFILES,
-                "--set", "Output/Points per profile=191"]
+                "--set", "Output/Stress-depth profiles=" + profiles(),
+                "--set", "Geometry/Subduction zone/Width=%g" % WIDTH_KM,
+                "--set", "Output/Points per profile=191",
+                "--set", "Output/Figures/Stress cross spacing=12"]
     for s in sets:
         command += ["--set", s]
     if elastic:
@@ -148,7 +157,7 @@ class Table:
 def measure(table, name, directory, stage, thesis):
     """Add the rows of one run (stage 'elastic' or '5Myr'); thesis maps a
     quantity key to the thesis's number (None: not quoted)."""
-    left, right = profile(directory, 1), profile(directory, 919)
+    left, right = profile(directory, 1), profile(directory, WIDTH_KM - 1)
     exp = "%s (%s)" % (name, stage)
 
     def add(key, text, value, unit):
@@ -350,7 +359,7 @@ def figures(outdir, names, stages):
         for stage in stages:
             d = os.path.join(outdir, "%s_%s" % (name, stage))
             for png in ("principal_stresses.png", "fault.png",
-                        "stress_depth_x919.png", "stress_depth_x1.png"):
+                        "stress_depth_x%g.png" % (WIDTH_KM - 1), "stress_depth_x1.png"):
                 if os.path.exists(os.path.join(d, png)):
                     shutil.copy(os.path.join(d, png), os.path.join(
                         fig_dir, "%s_%s_%s" % (name, stage, png)))
@@ -360,7 +369,7 @@ def figures(outdir, names, stages):
     for stage in stages:
         if len(series) > 1:
             fig, axes = plt.subplots(1, 2, figsize=(10, 6), sharey=True)
-            for ax, x, title in ((axes[0], 919, "right edge, overlying plate "
+            for ax, x, title in ((axes[0], WIDTH_KM - 1, "right edge, overlying plate "
                                   "(thesis fig. 7.66)"),
                                  (axes[1], 1, "left edge, subducting plate "
                                   "(thesis fig. 7.67)")):
@@ -392,7 +401,7 @@ def figures(outdir, names, stages):
                         [float(r["slip"]) for r in rows], label=label)
             ax.set_xlabel("distance along the plate boundary from the trench "
                           "[km]")
-            ax.set_ylabel("slip [m] (hanging wall down-dip > 0)")
+            ax.set_ylabel("slip [m] (< 0: the slab slides down-dip\nbeneath the overlying plate)")
             ax.set_title("Slip along the plate boundary, %s" %
                          ("elastic" if stage == "elastic" else "after 5 Myr"))
             ax.legend()
@@ -401,7 +410,7 @@ def figures(outdir, names, stages):
                         dpi=120)
             plt.close(fig)
         # Griffith failure regions of every run.
-        fig, axes = plt.subplots(len(names), 1, figsize=(10, 1.6 * len(names)),
+        fig, axes = plt.subplots(len(names), 1, figsize=(10, 1.9 * len(names)),
                                  sharex=True, squeeze=False)
         for ax, name in zip(axes[:, 0], names):
             d = os.path.join(outdir, "%s_%s" % (name, stage))
@@ -413,10 +422,11 @@ def figures(outdir, names, stages):
             ax.scatter(n["x"][f] / 1e3, n["y"][f] / 1e3, s=2, c="tab:red",
                        rasterized=True)
             ax.set_ylabel(name, rotation=0, ha="right", fontsize=8)
-            ax.set_aspect("equal")
-            ax.set_yticks([])
+            ax.set_aspect(2)
+            ax.set_yticks([-95, -50, 0])
+            ax.tick_params(labelsize=7)
         axes[-1, 0].set_xlabel("x [km]")
-        fig.suptitle("Griffith failure (red: C <= 0), %s" %
+        fig.suptitle("Griffith failure (red: C <= 0; y [km] exaggerated 2x), %s" %
                      ("elastic" if stage == "elastic" else "after 5 Myr"))
         fig.tight_layout()
         fig.savefig(os.path.join(fig_dir, "griffith_%s.png" % stage), dpi=110)
@@ -424,6 +434,7 @@ def figures(outdir, names, stages):
 
 
 def main():
+    global WIDTH_KM
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("outdir")
     parser.add_argument("--binary", default=os.path.join(ROOT, "build",
@@ -432,7 +443,10 @@ def main():
     parser.add_argument("--only", default="")
     parser.add_argument("--elastic-only", action="store_true")
     parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--width", type=float, default=WIDTH_KM,
+                        help="x of the right edge [km] (the thesis does not state it)")
     args = parser.parse_args()
+    WIDTH_KM = args.width
     os.makedirs(args.outdir, exist_ok=True)
     outdir = os.path.abspath(args.outdir)
     only = [s for s in args.only.split(",") if s]
