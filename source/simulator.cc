@@ -9,6 +9,7 @@
 #include <lithostress/boundary_conditions/rigid_body_support.h>
 #include <lithostress/discretization/elastic_assembler.h>
 #include <lithostress/faults/fault_output.h>
+#include <lithostress/geometry/coarse_mesh_writer.h>
 #include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/error_norms.h>
 #include <lithostress/postprocess/force_balance.h>
@@ -156,6 +157,18 @@ namespace lithostress
     prm.leave_subsection();
     geometry = GeometrySelector<dim>::create(prm);
     geometry->create_coarse_mesh(triangulation);
+    const std::string export_file =
+      GeometrySelector<dim>::coarse_mesh_file(prm);
+    on_all_ranks(communicator, [&]() {
+      if (!export_file.empty() &&
+          Utilities::MPI::this_mpi_process(communicator) == 0)
+        write_coarse_mesh_msh(triangulation,
+                              geometry->boundary_parts(),
+                              geometry->named_regions(),
+                              geometry->fault_traces(),
+                              length_scale,
+                              export_file);
+    });
     if (!use_manifolds)
       {
         triangulation.reset_all_manifolds();

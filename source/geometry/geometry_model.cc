@@ -15,9 +15,10 @@ namespace lithostress
     prm.enter_subsection("Geometry");
     prm.declare_entry("Model",
                       "rectangular block",
-                      Patterns::Selection("rectangular block|cantilever beam|"
-                                          "thin plate|layered box|quarter "
-                                          "annulus|L-shaped domain|subduction zone|gmsh"),
+                      Patterns::Selection(
+                        "rectangular block|cantilever beam|"
+                        "thin plate|layered box|quarter "
+                        "annulus|L-shaped domain|subduction zone|gmsh"),
                       "The geometry: a built-in generator or a Gmsh mesh.");
     prm.declare_entry("Length unit",
                       "m",
@@ -25,6 +26,14 @@ namespace lithostress
                       "Unit of lengths and coordinates given in the input "
                       "(geometry, points). Functions of position always "
                       "receive x, y in metres.");
+    prm.declare_entry("Write coarse mesh",
+                      "",
+                      Patterns::Anything(),
+                      "Write the coarse mesh, its boundary parts, regions and "
+                      "faults to this Gmsh MSH 2.2 file (relative to the "
+                      "working directory, coordinates in the Length unit) "
+                      "for Geometry/Model = gmsh to read back, e.g. to edit a "
+                      "generated section in Gmsh; empty = no file.");
     RectangularBlock<dim>::declare_parameters(prm);
     CantileverBeam<dim>::declare_parameters(prm);
     ThinPlate<dim>::declare_parameters(prm);
@@ -44,6 +53,16 @@ namespace lithostress
     const double scale = (prm.get("Length unit") == "km") ? 1e3 : 1.0;
     prm.leave_subsection();
     return scale;
+  }
+
+  template <int dim>
+  std::string
+  GeometrySelector<dim>::coarse_mesh_file(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    const std::string file = Utilities::trim(prm.get("Write coarse mesh"));
+    prm.leave_subsection();
+    return file;
   }
 
   template <int dim>

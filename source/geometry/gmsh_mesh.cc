@@ -40,6 +40,15 @@ namespace lithostress
                       Patterns::Anything(),
                       "Fault curves that are circular arcs, with their "
                       "centres: `name: x, y; name2: x, y` [length unit].");
+    prm.declare_entry("Concentric arcs",
+                      "",
+                      Patterns::Anything(),
+                      "Circles about one centre on which mesh lines lie, "
+                      "inside the body or on its boundary: `x, y: r1, r2, "
+                      "...` [length unit]. Every line whose two vertices lie "
+                      "on one of them follows it under refinement (polar "
+                      "manifold; its cells transfinite interpolation), as "
+                      "the slab's layers of the subduction zone (§7.2) do.");
     prm.leave_subsection();
   }
 
@@ -54,6 +63,7 @@ namespace lithostress
     const std::vector<std::string> fault_names =
       split_list(prm.get("Fault curves"));
     const std::string fault_arcs = prm.get("Fault arc centres");
+    const std::string concentric = prm.get("Concentric arcs");
     prm.leave_subsection();
     if (mesh_file.empty())
       throw_input_error("Geometry/Gmsh/Mesh file", "is empty");
@@ -108,6 +118,27 @@ namespace lithostress
       }
     if (!faults.empty())
       read_fault_curves(centres);
+
+    concentric_radii.clear();
+    if (!Utilities::trim(concentric).empty())
+      {
+        const std::string entry = "Geometry/Gmsh/Concentric arcs";
+        const auto        colon = concentric.find(':');
+        if (colon == std::string::npos)
+          throw_input_error(entry,
+                            "<" + concentric +
+                              "> is not of the form x, y: r1, r2, ...");
+        concentric_centre =
+          parse_point_list<dim>(concentric.substr(0, colon), entry, scale)[0];
+        for (const std::string &r : split_list(concentric.substr(colon + 1)))
+          {
+            concentric_radii.push_back(parse_number(r, entry) * scale);
+            if (!(concentric_radii.back() > 0))
+              throw_input_error(entry, "radii must be positive");
+          }
+        if (concentric_radii.empty())
+          throw_input_error(entry, "gives no radius");
+      }
   }
 
   template <int dim>
@@ -429,6 +460,41 @@ namespace lithostress
         centre[1] = fault.arc_centre[1];
         tria.set_manifold(arc_id, PolarManifold<dim>(centre));
       }
+    // Lines on the concentric circles, inside or on the boundary: one
+    // polar manifold after the arcs' and faults', their cells one
+    // transfinite interpolation.
+    const types::manifold_id concentric_id =
+      2 * (arcs.size() + faults.size()) + 1;
+    if (!concentric_radii.empty())
+      {
+        const auto on_a_circle = [&](const auto &face) {
+          const double r0 = face->vertex(0).distance(concentric_centre),
+                       r1 = face->vertex(1).distance(concentric_centre);
+          for (const double r : concentric_radii)
+            if (std::abs(r0 - r) < 1e-9 * r && std::abs(r1 - r) < 1e-9 * r)
+              return true;
+          return false;
+        };
+        unsigned int n_lines = 0;
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const auto &face : cell->face_iterators())
+            if (on_a_circle(face))
+              {
+                // Its cell's other lines, flat or on another transfinite
+                // interpolation (even ids), follow this one's.
+                cell->set_manifold_id(concentric_id + 1);
+                for (const auto &f : cell->face_iterators())
+                  if (f->manifold_id() == numbers::flat_manifold_id ||
+                      f->manifold_id() % 2 == 0)
+                    f->set_manifold_id(concentric_id + 1);
+                face->set_manifold_id(concentric_id);
+                ++n_lines;
+              }
+        if (n_lines == 0)
+          throw_input_error("Geometry/Gmsh/Concentric arcs",
+                            "no line of the mesh lies on these circles");
+        tria.set_manifold(concentric_id, PolarManifold<dim>(concentric_centre));
+      }
     for (unsigned int k = 0; k < arcs.size(); ++k)
       {
         transfinite[k].initialize(tria);
@@ -442,6 +508,12 @@ namespace lithostress
           fault_transfinite[j].initialize(tria);
           tria.set_manifold(2 * (arcs.size() + j) + 2, fault_transfinite[j]);
         }
+    if (!concentric_radii.empty())
+      {
+        TransfiniteInterpolationManifold<dim> concentric_transfinite;
+        concentric_transfinite.initialize(tria);
+        tria.set_manifold(concentric_id + 1, concentric_transfinite);
+      }
   }
 
   template <int dim>

@@ -79,6 +79,11 @@ namespace lithostress
     /** The factor that converts input lengths to metres. */
     static double
     length_scale(ParameterHandler &prm);
+
+    /** `Geometry/Write coarse mesh`: the Gmsh file to export the coarse
+     * mesh to, or empty. */
+    static std::string
+    coarse_mesh_file(ParameterHandler &prm);
   };
 } // namespace lithostress
 

@@ -65,8 +65,11 @@ namespace lithostress
     std::string                                     mesh_file;
     double                                          scale;
     std::vector<std::pair<std::string, Point<dim>>> arcs;
-    std::map<std::string, types::boundary_id>       boundary_names;
-    std::map<std::string, types::material_id>       region_names;
+    /** `Concentric arcs`: the centre and radii [m]. */
+    Point<dim>                                concentric_centre;
+    std::vector<double>                       concentric_radii;
+    std::map<std::string, types::boundary_id> boundary_names;
+    std::map<std::string, types::material_id> region_names;
   };
 } // namespace lithostress
 
