@@ -434,7 +434,7 @@ def figures(outdir, names, stages):
         axes[-1, 0].set_xlabel("x [km]")
         fig.suptitle("Griffith failure (red: C <= 0; y [km] exaggerated 2x), %s" %
                      ("elastic" if stage == "elastic" else "after 5 Myr"))
-        fig.tight_layout()
+        fig.tight_layout(rect=(0, 0, 1, 0.985))
         fig.savefig(os.path.join(fig_dir, "griffith_%s.png" % stage), dpi=110)
         plt.close(fig)
 
