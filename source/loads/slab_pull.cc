@@ -36,7 +36,9 @@ namespace lithostress
                       "The downward pull P [N/m], or `balance`: the net "
                       "upthrust of all other loads, so that the applied "
                       "vertical forces sum to zero (the thesis's intent; it "
-                      "quotes 8.95e12 and 3.95e12 N/m).");
+                      "quotes 8.95e12 and 3.95e12 N/m), measured on every new "
+                      "mesh at the time it is made (loads that change in "
+                      "time are balanced as they are then).");
     prm.declare_entry("Dip",
                       "90",
                       Patterns::Double(),
