@@ -78,6 +78,11 @@ expected = {
     "gmsh_fault_format4": "Geometry/Gmsh/Fault curves>: fault curves need a mesh file in MSH format 2",
     "subduction_circle_off_sea_floor": "Geometry/Subduction zone/Plate boundary centre>: the circle must touch the sea floor at its top",
     "subduction_coast_before_trench": "Geometry/Subduction zone/Coast position>: must lie between the trench and the right edge",
+    "slab_pull_zero_dip": "Loads/Slab pull/Dip>: must lie in (0, 90] degrees",
+    "slab_pull_upward": "Loads/Slab pull/Vertical force>: must be `balance` or a positive downward pull",
+    "slab_pull_nothing_to_balance": "Loads/Slab pull/Vertical force>: is `balance`, but the other loads' net vertical force is",
+    "write_coarse_mesh_unwritable": "Geometry/Write coarse mesh>: cannot write </nonexistent-directory/section.msh>",
+    "gmsh_concentric_no_line": "Geometry/Gmsh/Concentric arcs>: no line of the mesh lies on these circles",
     "gmsh_fault_unknown_curve": "Geometry/Gmsh/Fault curves>: the mesh has no physical curve <scarp>",
     "rigid_edge_pinned_corner": "Boundary conditions/right/x>: is `rigid`, but another part already prescribes",
     # Broken mesh files and command lines.
