@@ -165,12 +165,28 @@ namespace lithostress
     FullMatrix<double> &,
     Vector<double> &cell_rhs) const
   {
+    add_traction_terms(
+      fe_face_values,
+      displacement,
+      [&](const unsigned int q) {
+        return traction(id,
+                        fe_face_values.quadrature_point(q),
+                        fe_face_values.normal_vector(q));
+      },
+      cell_rhs);
+  }
+
+  template <int dim>
+  void
+  BoundaryTraction<dim>::add_traction_terms(
+    const FEFaceValues<dim>                           &fe_face_values,
+    const FEValuesExtractors::Vector                  &displacement,
+    const std::function<Tensor<1, dim>(unsigned int)> &traction_at,
+    Vector<double>                                    &cell_rhs)
+  {
     for (const unsigned int q : fe_face_values.quadrature_point_indices())
       {
-        const Tensor<1, dim> t = traction(id,
-                                          fe_face_values.quadrature_point(q),
-                                          fe_face_values.normal_vector(q)) *
-                                 fe_face_values.JxW(q);
+        const Tensor<1, dim> t = traction_at(q) * fe_face_values.JxW(q);
         for (const unsigned int i : fe_face_values.dof_indices())
           cell_rhs(i) += fe_face_values[displacement].value(i, q) * t;
       }

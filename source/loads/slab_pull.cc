@@ -1,5 +1,6 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
+#include <lithostress/loads/boundary_traction.h>
 #include <lithostress/loads/slab_pull.h>
 
 #include <cmath>
@@ -126,14 +127,13 @@ namespace lithostress
     if (id != part)
       return;
     const Tensor<1, dim> per_weight = force() / profile_integral;
-    for (const unsigned int q : fe_face_values.quadrature_point_indices())
-      {
-        const Tensor<1, dim> t =
-          per_weight * profile->value(fe_face_values.quadrature_point(q)) *
-          fe_face_values.JxW(q);
-        for (const unsigned int i : fe_face_values.dof_indices())
-          cell_rhs(i) += fe_face_values[displacement].value(i, q) * t;
-      }
+    BoundaryTraction<dim>::add_traction_terms(
+      fe_face_values,
+      displacement,
+      [&](const unsigned int q) {
+        return per_weight * profile->value(fe_face_values.quadrature_point(q));
+      },
+      cell_rhs);
   }
 
   template <int dim>

@@ -4,6 +4,7 @@
 #include <lithostress/base/parsed_expression.h>
 #include <lithostress/loads/load.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -55,6 +56,17 @@ namespace lithostress
 
     std::string
     description() const override;
+
+    /** Add ∫ t · v ds over the face of @p fe_face_values to @p cell_rhs,
+     * with the traction t at each quadrature point q given by
+     * @p traction_at(q) [Pa]: the right-hand side of every traction load
+     * (this one, SlabPull). */
+    static void
+    add_traction_terms(
+      const FEFaceValues<dim>                           &fe_face_values,
+      const FEValuesExtractors::Vector                  &displacement,
+      const std::function<Tensor<1, dim>(unsigned int)> &traction_at,
+      Vector<double>                                    &cell_rhs);
 
     /** The traction vector on part @p id at @p p with outward normal @p n. */
     Tensor<1, dim>
