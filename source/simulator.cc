@@ -68,6 +68,7 @@ namespace lithostress
     FrictionalSlidingSolver<dim>::declare_parameters(prm);
     LoadCollection<dim>::declare_parameters(prm, first_pass);
     MeshRefinement<dim>::declare_parameters(prm);
+    StressGoals<dim>::declare_parameters(prm);
     LinearSolverSelector<dim>::declare_parameters(prm);
     MemoryBudget::declare_parameters(prm);
     SolutionOutput<dim>::declare_parameters(prm);
@@ -256,6 +257,21 @@ namespace lithostress
                         "needs Output/Surface profile boundary");
 
     refinement.parse_parameters(prm);
+    goals.parse_parameters(prm, length_scale);
+    if (refinement.strategy == MeshRefinement<dim>::Strategy::adaptive &&
+        refinement.indicator == MeshRefinement<dim>::Indicator::goal_oriented &&
+        goals.empty())
+      throw_input_error("Mesh refinement/Indicator",
+                        "`goal oriented` needs the goals in Mesh "
+                        "refinement/Goals/Stress averages");
+    if (goals.stop_tolerance() > 0 && goals.empty())
+      throw_input_error("Mesh refinement/Goals/Stop at relative change",
+                        "needs the goals in Mesh refinement/Goals/Stress "
+                        "averages");
+    if (goals.stop_tolerance() > 0 && refinement.n_cycles < 2)
+      throw_input_error("Mesh refinement/Goals/Stop at relative change",
+                        "needs Mesh refinement/Number of cycles of 2 or "
+                        "more (the change is measured between cycles)");
     time_stepping.parse_parameters(prm);
     if (time_stepping.enabled && time_stepping.resume)
       Checkpoint::check_resumable(output_directory, prm, communicator);
@@ -619,12 +635,91 @@ namespace lithostress
                                          "/surface_profile.csv",
                                        profile);
         });
-        if (thin_plate.enabled && cycle + 1 == refinement.n_cycles)
+        if (thin_plate.enabled)
           thin_plate_profile = profile;
       }
     if (faults.has_face_terms())
       write_fault_results();
     log << progress.str() << std::endl;
+    if (!goals.empty())
+      record_goals();
+  }
+
+  template <int dim>
+  void
+  Simulator<dim>::record_goals()
+  {
+    const std::vector<double> values =
+      goals.values(dof_handler, *fe_space, *stress_model, solution);
+    std::vector<double> exact;
+    if (reference)
+      exact = goals.reference_values(dof_handler,
+                                     *fe_space,
+                                     *stress_model,
+                                     *reference);
+    std::ostringstream line;
+    line << "  goals:" << std::setprecision(6);
+    for (unsigned int k = 0; k < values.size(); ++k)
+      {
+        const std::string &name = goals.list()[k].name;
+        study.add(name, values[k], ConvergenceStudy::Kind::functional);
+        line << (k > 0 ? "," : "") << ' ' << name << ' ' << values[k];
+        if (reference)
+          study.add("rel_err_" + name,
+                    std::abs(values[k] - exact[k]) /
+                      std::max(std::abs(exact[k]), 1e-300),
+                    ConvergenceStudy::Kind::error);
+      }
+    // The change is measured against the last cycle with at most half as
+    // many DoFs: between two cycles that refine a handful of cells the
+    // goals hardly change whatever their error.
+    const std::vector<double> *before      = nullptr;
+    unsigned long long         before_dofs = 0;
+    for (const auto &[dofs, earlier] : goal_history)
+      if (2 * dofs <= statistics.dofs)
+        {
+          before      = &earlier;
+          before_dofs = dofs;
+        }
+    goals_converged = false;
+    if (before)
+      {
+        const auto [change, name] = goals.largest_change(*before, values);
+        line << "; largest change since " << before_dofs << " DoFs "
+             << std::setprecision(3) << 100 * change << " % (" << name << ")";
+        goals_converged = goals.converged(*before, values);
+      }
+    goal_history.emplace_back(statistics.dofs, values);
+    log << line.str() << std::endl;
+  }
+
+  template <int dim>
+  bool
+  Simulator<dim>::last_cycle()
+  {
+    if (goals_converged)
+      {
+        log << "  the goals changed by less than "
+            << 100 * goals.stop_tolerance()
+            << " % while the DoFs at least doubled: refinement cycles done"
+            << std::endl;
+        return true;
+      }
+    if (cycle + 1 < refinement.n_cycles)
+      return false;
+    if (goals.stop_tolerance() > 0)
+      {
+        std::ostringstream message;
+        message << "the goals (Mesh refinement/Goals) did not converge to "
+                << 100 * goals.stop_tolerance() << " % within "
+                << refinement.n_cycles
+                << " cycles; the results of every cycle are in "
+                << output_directory
+                << " (convergence.csv); raise Mesh refinement/Number of "
+                   "cycles";
+        throw ComputationError(message.str());
+      }
+    return true;
   }
 
   template <int dim>
@@ -783,6 +878,36 @@ namespace lithostress
     Timer              clock(communicator, true);
     const double dofs_per_cell = static_cast<double>(dof_handler.n_dofs()) /
                                  triangulation.n_global_active_cells();
+    // Goal-oriented refinement: the goals' dual solutions on the present
+    // operator, weighted by 1/|J_i| (relative accuracy of every goal).
+    std::vector<TrilinosWrappers::MPI::Vector> duals;
+    std::vector<double>                        weights;
+    if (refinement.strategy == MeshRefinement<dim>::Strategy::adaptive &&
+        refinement.indicator == MeshRefinement<dim>::Indicator::goal_oriented)
+      {
+        const std::vector<double> values =
+          goals.values(dof_handler, *fe_space, *stress_model, solution);
+        double largest = 0;
+        for (const double v : values)
+          largest = std::max(largest, std::abs(v));
+        for (const double v : values)
+          weights.push_back(1 /
+                            std::max({std::abs(v), 1e-6 * largest, 1e-300}));
+        SolverReport               report;
+        const DiscreteProblem<dim> problem{dof_handler,
+                                           *fe_space,
+                                           system,
+                                           *stress_model,
+                                           loads,
+                                           prescribed_displacement,
+                                           keep_solver_setup,
+                                           operator_version()};
+        duals =
+          solve_dual_problems(goals, problem, *linear_solver, faults, report);
+        log << "  goal-oriented refinement: " << duals.size()
+            << " dual solutions, " << report.solver << ' ' << report.iterations
+            << " it" << std::endl;
+      }
     refinement.refine(
       triangulation,
       dof_handler,
@@ -807,7 +932,9 @@ namespace lithostress
                                             : ""));
         if (before_change)
           before_change();
-      });
+      },
+      duals,
+      weights);
     statistics.mesh_time = clock.wall_time();
   }
 
@@ -820,6 +947,8 @@ namespace lithostress
     // fault's slip starts from zero on every mesh.
     slip_history = FaultSlipHistory();
     setup_dofs();
+    if (cycle == 0)
+      goals.check_regions(dof_handler, *fe_space);
     stop_if_requested("assembly");
     assemble_system();
     // The first assembly has evaluated every load on the first mesh:
@@ -847,21 +976,26 @@ namespace lithostress
   Simulator<dim>::run_cycles()
   {
     write_run_header();
-    for (cycle = 0; cycle < refinement.n_cycles; ++cycle)
+    for (cycle = 0;; ++cycle)
       {
         if (cycle > 0)
           refine_mesh("the mesh of cycle " + std::to_string(cycle));
         compute_cycle();
-        TimerOutput::Scope t(*timer, "output");
-        if (!solution_output.last_only || cycle + 1 == refinement.n_cycles)
-          solution_output.write(output_directory,
-                                cycle,
-                                cycle,
-                                dof_handler,
-                                *fe_space,
-                                *stress_model,
-                                griffith,
-                                solution);
+        const bool last = goals_converged || cycle + 1 == refinement.n_cycles;
+        {
+          TimerOutput::Scope t(*timer, "output");
+          if (!solution_output.last_only || last)
+            solution_output.write(output_directory,
+                                  cycle,
+                                  cycle,
+                                  dof_handler,
+                                  *fe_space,
+                                  *stress_model,
+                                  griffith,
+                                  solution);
+        }
+        if (last_cycle())
+          break;
       }
     write_final_results();
   }

@@ -29,7 +29,9 @@
 #include <lithostress/postprocess/stress_depth_profiles.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
 #include <lithostress/reference_solutions/reference_solution.h>
+#include <lithostress/refinement/dual_solutions.h>
 #include <lithostress/refinement/mesh_refinement.h>
+#include <lithostress/refinement/stress_goals.h>
 #include <lithostress/solvers/linear_solver.h>
 #include <lithostress/time_integration/creep_integrator.h>
 #include <lithostress/time_integration/time_stepping.h>
@@ -110,6 +112,15 @@ namespace lithostress
     solve();
     void
     postprocess(const unsigned int cycle);
+    /** The goals' values of this cycle: convergence table, log, and
+     * whether they have converged (Mesh refinement/Goals). */
+    void
+    record_goals();
+    /** Whether the cycle just computed is the last: the goals have
+     * converged, or it is the last of `Number of cycles` (then throws a
+     * ComputationError if the goals were to converge and have not). */
+    bool
+    last_cycle();
     /** fault.csv and fault_summary.json of each elastic or frictional
      * fault (faults/fault_output.h; fault_<name>.csv and
      * fault_summary_<name>.json when the model has several faults); in the
@@ -192,7 +203,16 @@ namespace lithostress
     TrilinosWrappers::MPI::Vector            solution;
     std::unique_ptr<LinearSolver<dim>>       linear_solver;
     MeshRefinement<dim>                      refinement;
-    MemoryBudget                             memory_budget;
+    /** Quantities of interest: goal-oriented refinement and the stopping
+     * test of the cycles. */
+    StressGoals<dim> goals;
+    /** The goals' values of every cycle with its DoFs, and whether the
+     * last changed by less than the stop tolerance from the last cycle
+     * with at most half as many DoFs. */
+    std::vector<std::pair<unsigned long long, std::vector<double>>>
+                 goal_history;
+    bool         goals_converged = false;
+    MemoryBudget memory_budget;
     /** The cycle being computed (for the message of an interrupted run). */
     unsigned int cycle = 0;
     /** The model time [s] at which loads and prescribed displacements are

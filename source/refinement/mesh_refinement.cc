@@ -34,9 +34,14 @@ namespace lithostress
                       "Refine all cells, or by an error indicator.");
     prm.declare_entry("Indicator",
                       "Kelly",
-                      Patterns::Selection("Kelly|stress recovery"),
+                      Patterns::Selection(
+                        "Kelly|stress recovery|goal oriented"),
                       "Adaptive indicator: Kelly (jump of the displacement "
-                      "gradient) or stress recovery (Zienkiewicz-Zhu).");
+                      "gradient), stress recovery (Zienkiewicz-Zhu), or goal "
+                      "oriented (the stress-recovery indicators of the "
+                      "solution and of the dual solutions of `Goals/Stress "
+                      "averages` multiplied: refines where the goals' error "
+                      "arises).");
     prm.declare_entry("Marking",
                       "fraction of error",
                       Patterns::Selection(
@@ -71,7 +76,9 @@ namespace lithostress
     strategy =
       prm.get("Strategy") == "global" ? Strategy::global : Strategy::adaptive;
     indicator     = prm.get("Indicator") == "Kelly" ? Indicator::kelly
-                                                    : Indicator::stress_recovery;
+                    : prm.get("Indicator") == "goal oriented"
+                      ? Indicator::goal_oriented
+                      : Indicator::stress_recovery;
     max_level     = prm.get_integer("Maximum level");
     marking       = prm.get("Marking") == "fraction of error"
                       ? Marking::fraction_of_error
@@ -95,36 +102,112 @@ namespace lithostress
   template <int dim>
   Vector<float>
   MeshRefinement<dim>::indicators(
-    const DoFHandler<dim>               &dof_handler,
-    const FiniteElementSpace<dim>       &fe_space,
-    const StressModel<dim>              &stress_model,
-    const TrilinosWrappers::MPI::Vector &solution) const
+    const DoFHandler<dim>                            &dof_handler,
+    const FiniteElementSpace<dim>                    &fe_space,
+    const StressModel<dim>                           &stress_model,
+    const TrilinosWrappers::MPI::Vector              &solution,
+    const std::vector<TrilinosWrappers::MPI::Vector> &duals,
+    const std::vector<double>                        &weights) const
   {
     const auto   &tria = dof_handler.get_triangulation();
     Vector<float> eta(tria.n_active_cells());
-    if (indicator == Indicator::kelly)
+    const auto    reported_stress =
+      [&](const typename Triangulation<dim>::active_cell_iterator &cell,
+          const Point<dim>                                        &unit,
+          const Point<dim>                                        &p,
+          const SymmetricTensor<2, dim>                           &strain) {
+        return stress_model.stress(cell, unit, p, strain).in_plane;
+      };
+    if (indicator == Indicator::stress_recovery)
+      return stress_recovery(
+        dof_handler, fe_space, stress_model, solution, reported_stress);
+    if (indicator == Indicator::goal_oriented)
       {
-        KellyErrorEstimator<dim>::estimate(
-          fe_space.mapping(),
-          dof_handler,
-          fe_space.face_quadrature(),
-          std::map<types::boundary_id, const Function<dim> *>(),
-          solution,
-          eta,
-          ComponentMask(),
-          nullptr,
-          numbers::invalid_unsigned_int,
-          tria.locally_owned_subdomain());
+        for (const Vector<float> &goal : goal_indicators(
+               dof_handler, fe_space, stress_model, solution, duals, weights))
+          eta += goal;
         return eta;
       }
+    KellyErrorEstimator<dim>::estimate(
+      fe_space.mapping(),
+      dof_handler,
+      fe_space.face_quadrature(),
+      std::map<types::boundary_id, const Function<dim> *>(),
+      solution,
+      eta,
+      ComponentMask(),
+      nullptr,
+      numbers::invalid_unsigned_int,
+      tria.locally_owned_subdomain());
+    return eta;
+  }
 
+  template <int dim>
+  std::vector<Vector<float>>
+  MeshRefinement<dim>::goal_indicators(
+    const DoFHandler<dim>                            &dof_handler,
+    const FiniteElementSpace<dim>                    &fe_space,
+    const StressModel<dim>                           &stress_model,
+    const TrilinosWrappers::MPI::Vector              &solution,
+    const std::vector<TrilinosWrappers::MPI::Vector> &duals,
+    const std::vector<double>                        &weights) const
+  {
+    AssertThrow(!duals.empty() && duals.size() == weights.size(),
+                ExcMessage("the goal-oriented indicator needs the dual "
+                           "solutions of the goals"));
+    const Vector<float> primal = stress_recovery(
+      dof_handler,
+      fe_space,
+      stress_model,
+      solution,
+      [&](const typename Triangulation<dim>::active_cell_iterator &cell,
+          const Point<dim>                                        &unit,
+          const Point<dim>                                        &p,
+          const SymmetricTensor<2, dim>                           &strain) {
+        return stress_model.stress(cell, unit, p, strain).in_plane;
+      });
+    // The dual's stress is the linear law of the operator it solved.
+    const auto dual_stress =
+      [&](const typename Triangulation<dim>::active_cell_iterator &cell,
+          const Point<dim> &,
+          const Point<dim> &,
+          const SymmetricTensor<2, dim> &strain) {
+        return stress_model.step_moduli(cell->material_id()).stress(strain);
+      };
+    std::vector<Vector<float>> result;
+    for (unsigned int i = 0; i < duals.size(); ++i)
+      {
+        Vector<float> eta = stress_recovery(
+          dof_handler, fe_space, stress_model, duals[i], dual_stress);
+        for (unsigned int c = 0; c < eta.size(); ++c)
+          eta(c) *= static_cast<float>(weights[i]) * primal(c);
+        result.push_back(std::move(eta));
+      }
+    return result;
+  }
+
+  template <int dim>
+  Vector<float>
+  MeshRefinement<dim>::stress_recovery(
+    const DoFHandler<dim>               &dof_handler,
+    const FiniteElementSpace<dim>       &fe_space,
+    const StressModel<dim>              &stress_model,
+    const TrilinosWrappers::MPI::Vector &solution,
+    const StressOf                      &stress_of) const
+  {
+    const auto   &tria = dof_handler.get_triangulation();
+    Vector<float> eta(tria.n_active_cells());
     // Zienkiewicz–Zhu: average the stress at the nodes of a continuous
     // Q_p field (each cell contributes its stress at the node), then
-    // η_K = ‖σ_h − σ*‖_{L2(K)}. The average is taken per material: across
-    // a material interface the tangential stress jumps physically (only
-    // the traction is continuous), and one average over both sides would
-    // report that jump as an error and refine the interface instead of
-    // where the solution is poorly resolved.
+    // η_K = ‖σ_h − σ*‖_{L2(K)}. The average is taken per law: across an
+    // interface between materials of different moduli or viscosity the
+    // tangential stress jumps physically (only the traction is
+    // continuous), and one average over both sides would report that jump
+    // as an error and refine the interface instead of where the solution is
+    // poorly resolved. Materials of the same law (two names for the same
+    // rock, e.g. an upper and a lower crust that differ only in where they
+    // are) share one average, so that a stress gradient across one cell
+    // layer of each shows; the two sides of a fault (two fields) never do.
     const MPI_Comm      comm     = dof_handler.get_communicator();
     const unsigned int  n_stress = dim * (dim + 1) / 2;
     const FESystem<dim> stress_fe(FE_Q<dim>(fe_space.degree()), n_stress);
@@ -139,9 +222,34 @@ namespace lithostress
       if (cell->is_locally_owned())
         material_ids.push_back(cell->material_id());
     material_ids = Utilities::MPI::compute_set_union(material_ids, comm);
-    std::map<types::material_id, unsigned int> slot;
+    // The law of each material: its index among the distinct laws.
+    std::map<types::material_id, unsigned int> law;
     for (const auto id : material_ids)
-      slot.emplace(id, slot.size());
+      {
+        unsigned int same = law.size();
+        for (const auto &[other, index] : law)
+          if ((stress_model.moduli(id).stiffness() -
+               stress_model.moduli(other).stiffness())
+                  .norm() <=
+                1e-12 * stress_model.moduli(id).stiffness().norm() &&
+              stress_model.maxwell(id).maxwell_time() ==
+                stress_model.maxwell(other).maxwell_time())
+            same = std::min(same, index);
+        law.emplace(id, same);
+      }
+    // One average per law and field.
+    std::map<std::pair<unsigned int, unsigned int>, unsigned int> group;
+    for (const auto &[id, l] : law)
+      for (unsigned int f = 0; f < fe_space.n_fields(); ++f)
+        group.emplace(std::make_pair(l, f), group.size());
+    const auto slot_of = [&](const auto &cell) {
+      return group.at(
+        std::make_pair(law.at(cell->material_id()),
+                       fe_space.field_of(cell->active_fe_index())));
+    };
+    std::map<unsigned int, unsigned int> slot;
+    for (const auto &g : group)
+      slot.emplace(g.second, g.second);
     std::vector<TrilinosWrappers::MPI::Vector> sum(slot.size()),
       weight(slot.size());
     for (unsigned int m = 0; m < slot.size(); ++m)
@@ -181,17 +289,15 @@ namespace lithostress
             grads.resize(fv.n_quadrature_points);
             fv[u].get_function_gradients(solution, grads);
             stress_cell->get_dof_indices(stress_indices);
-            const unsigned int m = slot.at(cell->material_id());
+            const unsigned int m = slot_of(cell);
             for (unsigned int i = 0; i < stress_fe.n_dofs_per_cell(); ++i)
               {
                 const auto ci = stress_fe.system_to_component_index(i);
                 const SymmetricTensor<2, dim> s =
-                  stress_model
-                    .stress(cell,
+                  stress_of(cell,
                             fv.get_quadrature().point(ci.second),
                             fv.quadrature_point(ci.second),
-                            symmetrize(grads[ci.second]))
-                    .in_plane;
+                            symmetrize(grads[ci.second]));
                 sum[m](stress_indices[i]) += stress_component(s, ci.first);
                 weight[m](stress_indices[i]) += 1.0;
               }
@@ -243,18 +349,15 @@ namespace lithostress
             grads.resize(fv.n_quadrature_points);
             fv[u].get_function_gradients(solution, grads);
             stress_values.reinit(stress_cell);
-            stress_values.get_function_values(
-              recovered[slot.at(cell->material_id())], s_star);
+            stress_values.get_function_values(recovered[slot_of(cell)], s_star);
             double e2 = 0;
             for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
               {
                 const SymmetricTensor<2, dim> s =
-                  stress_model
-                    .stress(cell,
+                  stress_of(cell,
                             fv.get_quadrature().point(q),
                             fv.quadrature_point(q),
-                            symmetrize(grads[q]))
-                    .in_plane;
+                            symmetrize(grads[q]));
                 for (unsigned int c = 0; c < n_stress; ++c)
                   {
                     const double d = stress_component(s, c) - s_star[q](c);
@@ -273,7 +376,8 @@ namespace lithostress
   void
   MeshRefinement<dim>::mark_fraction_of_error(
     parallel::distributed::Triangulation<dim> &tria,
-    const Vector<float>                       &eta) const
+    const Vector<float>                       &eta,
+    const bool                                 with_coarsening) const
   {
     // Dörfler marking by bisection on the threshold: refine the cells with
     // η_K > t where t is the largest value with Σ_{η_K > t} η_K² ≥ θ Σ η_K²;
@@ -329,7 +433,7 @@ namespace lithostress
         refine_threshold = lo;
       }
     double coarsen_threshold = 0;
-    if (coarsen_fraction > 0)
+    if (with_coarsening && coarsen_fraction > 0)
       {
         double lo = 0, hi = largest;
         for (unsigned int it = 0; it < 60; ++it)
@@ -360,12 +464,14 @@ namespace lithostress
   template <int dim>
   void
   MeshRefinement<dim>::refine(
-    parallel::distributed::Triangulation<dim>       &tria,
-    const DoFHandler<dim>                           &dof_handler,
-    const FiniteElementSpace<dim>                   &fe_space,
-    const StressModel<dim>                          &stress_model,
-    const TrilinosWrappers::MPI::Vector             &solution,
-    const std::function<void(double, unsigned int)> &check_new_mesh) const
+    parallel::distributed::Triangulation<dim>        &tria,
+    const DoFHandler<dim>                            &dof_handler,
+    const FiniteElementSpace<dim>                    &fe_space,
+    const StressModel<dim>                           &stress_model,
+    const TrilinosWrappers::MPI::Vector              &solution,
+    const std::function<void(double, unsigned int)>  &check_new_mesh,
+    const std::vector<TrilinosWrappers::MPI::Vector> &duals,
+    const std::vector<double>                        &weights) const
   {
     if (strategy == Strategy::global)
       {
@@ -376,16 +482,38 @@ namespace lithostress
       }
     else
       {
-        const Vector<float> eta =
-          indicators(dof_handler, fe_space, stress_model, solution);
-        if (marking == Marking::fraction_of_cells)
-          parallel::distributed::GridRefinement::
-            refine_and_coarsen_fixed_number(tria,
-                                            eta,
-                                            refine_fraction,
-                                            coarsen_fraction);
+        if (marking == Marking::fraction_of_error &&
+            indicator == Indicator::goal_oriented)
+          {
+            // Every goal gets its own Dörfler set (their union is refined):
+            // a goal whose error is small against another's in absolute
+            // terms still converges (Mommer & Stevenson 2009 mark the
+            // union of the primal and dual sets for the same reason).
+            const std::vector<Vector<float>> per_goal = goal_indicators(
+              dof_handler, fe_space, stress_model, solution, duals, weights);
+            Vector<float> eta(per_goal[0].size());
+            for (const Vector<float> &goal : per_goal)
+              eta += goal;
+            mark_fraction_of_error(tria, eta);
+            for (const Vector<float> &goal : per_goal)
+              mark_fraction_of_error(tria, goal, false);
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned() && cell->refine_flag_set())
+                cell->clear_coarsen_flag();
+          }
         else
-          mark_fraction_of_error(tria, eta);
+          {
+            const Vector<float> eta = indicators(
+              dof_handler, fe_space, stress_model, solution, duals, weights);
+            if (marking == Marking::fraction_of_cells)
+              parallel::distributed::GridRefinement::
+                refine_and_coarsen_fixed_number(tria,
+                                                eta,
+                                                refine_fraction,
+                                                coarsen_fraction);
+            else
+              mark_fraction_of_error(tria, eta);
+          }
         for (const auto &cell : tria.active_cell_iterators())
           if (cell->is_locally_owned() && cell->refine_flag_set() &&
               static_cast<unsigned int>(cell->level()) >= max_level)

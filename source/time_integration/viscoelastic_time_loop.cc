@@ -257,13 +257,14 @@ namespace lithostress
     // The elastic response at t = 0 on the mesh of the refinement cycles.
     sim.time = 0;
     model.set_time_step(0, settings.theta);
-    for (sim.cycle = 0; sim.cycle < sim.refinement.n_cycles; ++sim.cycle)
+    for (sim.cycle = 0;; ++sim.cycle)
       {
         if (sim.cycle > 0)
           sim.refine_mesh("the mesh of cycle " + std::to_string(sim.cycle));
         sim.compute_cycle();
+        if (sim.last_cycle())
+          break;
       }
-    --sim.cycle;
     ++linear_solves;
     creep.start_history();
     model.attach_creep_strain(&creep.creep_strain());

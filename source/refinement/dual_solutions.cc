@@ -1,0 +1,108 @@
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <lithostress/refinement/dual_solutions.h>
+
+#include <memory>
+
+namespace lithostress
+{
+  template <int dim>
+  std::vector<TrilinosWrappers::MPI::Vector>
+  solve_dual_problems(const StressGoals<dim>     &goals,
+                      const DiscreteProblem<dim> &problem,
+                      LinearSolver<dim>          &linear_solver,
+                      const FaultInterface<dim>  &faults,
+                      SolverReport               &report)
+  {
+    using InterfacePoint      = typename FaultInterface<dim>::InterfacePoint;
+    LinearSystem<dim> &system = problem.system;
+    const MPI_Comm     communicator = problem.dof_handler.get_communicator();
+    report                          = SolverReport();
+    report.linear_solves            = 0;
+
+    // The constraints' inhomogeneous part g = distribute(0): the dual
+    // solution is distribute(z) - g, zero where a displacement is
+    // prescribed.
+    TrilinosWrappers::MPI::Vector inhomogeneity(system.locally_owned,
+                                                communicator);
+    inhomogeneity = 0;
+    system.constraints.distribute(inhomogeneity);
+
+    // A frictional fault: the bulk matrix with the stuck springs, factorised
+    // once.
+    TrilinosWrappers::SparseMatrix                  stuck;
+    std::unique_ptr<SolverControl>                  control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    if (faults.frictional())
+      {
+        stuck.copy_from(system.matrix);
+        faults.assemble_interface(
+          problem.dof_handler,
+          problem.fe_space,
+          system.constraints,
+          nullptr,
+          [&faults](const unsigned int,
+                    const InterfacePoint &p,
+                    const Tensor<1, dim> &w,
+                    Tensor<1, dim>       &t,
+                    Tensor<2, dim>       &D) {
+            const CoulombFriction &law = faults.friction(p.fault);
+            D = law.shear_stiffness * outer_product(p.shear, p.shear) +
+                law.normal_stiffness * outer_product(p.normal, p.normal);
+            t = D * w;
+          },
+          &stuck,
+          nullptr,
+          nullptr);
+        control = std::make_unique<SolverControl>(1, 0);
+        direct  = std::make_unique<TrilinosWrappers::SolverDirect>(*control);
+        direct->initialize(stuck);
+        report.solver = "direct (dual)";
+      }
+
+    std::vector<TrilinosWrappers::MPI::Vector> duals;
+    for (unsigned int k = 0; k < goals.list().size(); ++k)
+      {
+        TrilinosWrappers::MPI::Vector z;
+        system.rhs.reinit(system.locally_owned, communicator);
+        goals.assemble_dual_rhs(k,
+                                problem.dof_handler,
+                                problem.fe_space,
+                                problem.stress_model,
+                                system.constraints,
+                                system.rhs);
+        if (direct)
+          {
+            z.reinit(system.locally_owned, communicator);
+            direct->solve(z, system.rhs);
+          }
+        else
+          {
+            // One operator for all goals: its set-up is kept between them.
+            DiscreteProblem<dim> dual = problem;
+            dual.keep_setup = problem.keep_setup || k + 1 < goals.list().size();
+            const SolverReport r = linear_solver.solve(dual, z);
+            report.solver        = r.solver;
+            report.iterations += r.iterations;
+            report.solve_time += r.solve_time;
+          }
+        ++report.linear_solves;
+        system.constraints.distribute(z);
+        z -= inhomogeneity;
+        duals.emplace_back(system.locally_owned,
+                           system.locally_relevant,
+                           communicator);
+        duals.back() = z;
+      }
+    return duals;
+  }
+
+  template std::vector<TrilinosWrappers::MPI::Vector>
+  solve_dual_problems<2>(const StressGoals<2> &,
+                         const DiscreteProblem<2> &,
+                         LinearSolver<2> &,
+                         const FaultInterface<2> &,
+                         SolverReport &);
+} // namespace lithostress
