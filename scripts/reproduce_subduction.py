@@ -18,7 +18,10 @@ and writes
 
   OUTDIR/subduction_comparison.csv  experiment,quantity,ours,thesis,unit:
       one row for every number SPEC §5.2 quotes (thesis empty where the
-      thesis gives none, e.g. after 5 Myr for §7.5 and §7.6)
+      thesis gives none, e.g. after 5 Myr for §7.5 and §7.6), and one for
+      each goal of the .prm files (regional means over boxes), converged by
+      goal-oriented adaptive refinement from the coarse mesh until they
+      change by < 1 % while the DoFs double
   OUTDIR/<name>_elastic/, OUTDIR/<name>_5Myr/  each run's output
   OUTDIR/figures/  thesis-style figures: principal-stress crosses per run,
       deviatoric sigma_xx against depth at the left and right edges for the
@@ -142,6 +145,50 @@ class Table:
                             "" if t is None else t, u])
 
 
+def goals(directory):
+    """The goals of the run's last refinement cycle (convergence.csv) and
+    the cycles and DoFs it took: ({goal: value [Pa]}, cycles, dofs)."""
+    with open(os.path.join(directory, "convergence.csv")) as f:
+        rows = list(csv.DictReader(f))
+    fixed = {"cycle", "cells", "dofs"}
+    last = rows[-1]
+    values = {k: float(v) for k, v in last.items()
+              if k not in fixed and not k.startswith("change_") and v != ""
+              and not k.startswith("rel_err_")}
+    return values, len(rows), int(last["dofs"])
+
+
+# The goals (Mesh refinement/Goals of the .prm files): what each box is.
+GOAL_TEXT = {
+    "right_crust": "mean horizontal deviatoric stress in the continental "
+                   "crust at the right edge, 5-10 km (x 900-920 km)",
+    "trench": "mean vertical stress in the subducting lid beneath the "
+              "trench (x 470-500 km, 20-40 km deep)",
+    "rise": "mean vertical stress beneath the outer rise (x 250-400 km, "
+            "5-35 km deep)",
+    "left_lid": "mean horizontal stress in the subducting lid at the left "
+                "edge (x 0-20 km, 0-30 km below the sea floor)",
+    "right_upper_crust": "mean horizontal stress in the continental upper "
+                         "crust at the right edge (x 900-920 km, 0-10 km)",
+    "right_mantle": "mean horizontal stress in the continental mantle at "
+                    "the right edge (x 900-920 km, 35-95 km)",
+    "forearc": "mean horizontal stress near the surface of the forearc (x "
+               "600-700 km, top 2 km)",
+    "fault_base_top": "mean horizontal stress above the plate boundary's "
+                      "base (x 650-670 km, top 5 km)",
+    "fault_base_deep": "mean horizontal stress beneath it (x 650-670 km, "
+                       "15-35 km)",
+    "right_plate": "mean horizontal stress in the overlying plate at the "
+                   "right edge (x 900-920 km, whole thickness)",
+    "left_plate": "mean horizontal stress in the subducting plate at the "
+                  "left edge (x 0-20 km, whole thickness)",
+    "anomaly_top": "mean horizontal stress at the top above the anomaly "
+                   "(x 770-790 km, top 5 km)",
+    "anomaly_base": "mean horizontal stress at the base above the anomaly "
+                    "(x 770-790 km, 75-95 km)",
+}
+
+
 def measure(table, name, directory, stage, thesis):
     """Add the rows of one run (stage 'elastic' or '5Myr'); thesis maps a
     quantity key to the thesis's number (None: not quoted)."""
@@ -150,6 +197,20 @@ def measure(table, name, directory, stage, thesis):
 
     def add(key, text, value, unit):
         table.add(exp, text, value, thesis.get(key), unit)
+
+    # The goals, converged by goal-oriented refinement (the .prm files stop
+    # the cycles once they change by < 1 % while the DoFs double).
+    values, cycles, dofs = goals(directory)
+    texts = dict(GOAL_TEXT)
+    if name.startswith("coupling"):
+        # The coupling series' crust goal is sigma_xx over 0-35 km.
+        texts["right_crust"] = ("mean horizontal stress in the continental "
+                                "crust at the right edge (x 900-920 km, "
+                                "0-35 km)")
+    for goal, value in values.items():
+        add("goal_" + goal, "goal %s: %s (%d adaptive cycles, %d DoFs)"
+            % (goal, texts.get(goal, goal), cycles, dofs), value * MPA,
+            "MPa")
 
     if name == "density" or name.startswith("slab_pull"):
         value, depth = peak(right, "deviatoric_xx", +1, 0, 35)
@@ -265,11 +326,13 @@ def measure(table, name, directory, stage, thesis):
 
 # The thesis's numbers (SPEC §5.2) by experiment, stage and quantity key.
 THESIS = {
-    ("density", "elastic"): {"right_tension": 22.5,
+    ("density", "elastic"): {"right_tension": 22.5, "goal_right_crust": 22.5,
                              "right_tension_depth": "5-10",
                              "trench_tension": 100, "rise_compression": 10},
-    ("density", "5Myr"): {"right_tension": 38, "right_tension_depth": "5-10"},
+    ("density", "5Myr"): {"right_tension": 38, "right_tension_depth": "5-10",
+                          "goal_right_crust": 38},
     ("slab_pull_90", "elastic"): {"right_tension": 31.5,
+                                  "goal_right_crust": 31.5,
                                   "right_tension_depth": "5-10",
                                   "pull": 8.95e12, "pull_stress": 51.05,
                                   "upthrust": 3.95e12, "bending": 110,

@@ -4,25 +4,22 @@ uniform and adaptive refinement (elastic response; issue 17).
 
 For each configuration of scripts/reproduce_subduction.py, the key numbers
 (the thesis's quoted maxima at the edges and above the anomaly, measured as
-in subduction_comparison.csv) on
+in subduction_comparison.csv, and the goals of the .prm files: regional
+means over boxes) on
 
-  uniform:  Initial global refinement 0, 1, 2, 3 (481 ... 30 784 cells)
-  adaptive: stress-recovery indicator, the 30 % of the cells with the
-            largest indicator refined per cycle (the mesh grows about 1.9x
-            a cycle; marking a fraction of the error refines little more
-            than the singular corners, so that the numbers would stall
-            rather than converge), from the once refined mesh (the coarse
-            mesh has one cell through the upper crust, and an indicator of
-            the global error never refines the edges where the thesis's
-            numbers are read: their values would stall, not converge),
-            cycles 1 ... N
+  uniform:  Initial global refinement 0, 1, 2, 3 (510 ... 32 640 cells)
+  adaptive: the .prm files' goal-oriented refinement from the coarse mesh
+            (the stress-recovery indicators of the solution and of each
+            goal's dual solution multiplied; each goal refines its share
+            of 30 % of the cells), cycles 1 ... N
 
 and writes OUTDIR/subduction_convergence.csv with the columns
 experiment,refinement,level,cells,dofs,quantity,value,change_percent,
 error_percent (change from the previous level; difference from the
-finest uniform level) and prints, per configuration and strategy, the
-DoFs at which every key number is within 1 % of the finest uniform
-mesh's.
+finest uniform level), prints per configuration and strategy the DoFs at
+which every key number is within 1 % of the finest uniform mesh's, and
+where the .prm files' own stopping rule (the goals change by < 1 % while
+the DoFs double) ends the cycles.
 
 Usage: subduction_convergence.py OUTDIR [--binary PATH] [--only NAME,...]
                                  [--levels 4] [--cycles 6]
@@ -55,10 +52,12 @@ KEYS = {
 
 
 def keys_of(name):
+    """The tracked quantities of experiment name: its key rows and every
+    goal."""
     for prefix, keys in KEYS.items():
         if name.startswith(prefix):
-            return keys
-    return []
+            return keys + ["goal "]
+    return ["goal "]
 
 
 def measure_once(binary, name, prm, sets, directory):
@@ -69,8 +68,11 @@ def measure_once(binary, name, prm, sets, directory):
     for key in keys_of(name):
         for _, quantity, ours, _, _ in table.rows:
             if quantity.startswith(key):
-                values[quantity] = ours
-                break
+                # A goal's text names the cycles and DoFs: keep its name.
+                label = quantity.split(" (")[0] if key == "goal " else quantity
+                values[label] = ours
+                if key != "goal ":
+                    break
     return stats, values
 
 
@@ -91,13 +93,10 @@ def main():
             continue
         results = {}
         for strategy, runs in (
-                ("uniform", [(level, ["Mesh refinement/Initial global refinement=%d" % level])
+                ("uniform", [(level, ["Mesh refinement/Initial global refinement=%d" % level,
+                                      "Mesh refinement/Number of cycles=1"])
                              for level in range(args.levels)]),
-                ("adaptive", [(cycle, ["Mesh refinement/Initial global refinement=1",
-                                       "Mesh refinement/Strategy=adaptive",
-                                       "Mesh refinement/Indicator=stress recovery",
-                                       "Mesh refinement/Marking=fraction of cells",
-                                       "Mesh refinement/Refine fraction=0.3",
+                ("adaptive", [(cycle, ["Mesh refinement/Goals/Stop at relative change=0",
                                        "Mesh refinement/Number of cycles=%d" % cycle])
                               for cycle in range(1, args.cycles + 1)])):
             results[strategy] = []
@@ -107,6 +106,14 @@ def main():
                                              list(sets) + extra + ["Output/Figures/Enabled=false"], d)
                 results[strategy].append((level, stats, values))
                 print("%-20s %-9s %d: %6d DoFs" % (name, strategy, level, stats["dofs"]), flush=True)
+        # Where the .prm file's own rule stops the cycles.
+        d = os.path.join(outdir, "%s_stop" % name)
+        stats = rs.run(args.binary, prm, d, list(sets) + ["Output/Figures/Enabled=false"], True, 1)
+        with open(os.path.join(d, "convergence.csv")) as f:
+            stopped = list(csv.DictReader(f))
+        summary[(name, "stop")] = {"cycles": len(stopped), "dofs": stats["dofs"]}
+        print("%-20s stops after %d cycles at %d DoFs" % (name, len(stopped), stats["dofs"]),
+              flush=True)
         reference = results["uniform"][-1][2]
         for strategy, levels in results.items():
             previous = None
@@ -131,8 +138,9 @@ def main():
     with open(os.path.join(outdir, "subduction_convergence_summary.json"), "w") as f:
         json.dump({"%s %s" % k: v for k, v in summary.items()}, f, indent=1)
     for (name, strategy), dofs in sorted(summary.items()):
-        print("%-20s %-9s within 1 %% of the finest uniform mesh at %d DoFs"
-              % (name, strategy, dofs))
+        if strategy != "stop":
+            print("%-20s %-9s within 1 %% of the finest uniform mesh at %d DoFs"
+                  % (name, strategy, dofs))
 
 
 if __name__ == "__main__":

@@ -268,10 +268,6 @@ namespace lithostress
       throw_input_error("Mesh refinement/Goals/Stop at relative change",
                         "needs the goals in Mesh refinement/Goals/Stress "
                         "averages");
-    if (goals.stop_tolerance() > 0 && refinement.n_cycles < 2)
-      throw_input_error("Mesh refinement/Goals/Stop at relative change",
-                        "needs Mesh refinement/Number of cycles of 2 or "
-                        "more (the change is measured between cycles)");
     time_stepping.parse_parameters(prm);
     if (time_stepping.enabled && time_stepping.resume)
       Checkpoint::check_resumable(output_directory, prm, communicator);
@@ -707,7 +703,9 @@ namespace lithostress
       }
     if (cycle + 1 < refinement.n_cycles)
       return false;
-    if (goals.stop_tolerance() > 0)
+    // A single cycle has nothing to compare with (said in the log's
+    // header); more cycles that did not converge are an error.
+    if (goals.stop_tolerance() > 0 && refinement.n_cycles > 1)
       {
         std::ostringstream message;
         message << "the goals (Mesh refinement/Goals) did not converge to "
@@ -860,6 +858,9 @@ namespace lithostress
     if (stress_model->has_viscous_material() && !time_stepping.enabled)
       log << "Note: the viscosities are not used (Time stepping/Enabled = "
              "false): this is the elastic response at t = 0.\n";
+    if (goals.stop_tolerance() > 0 && refinement.n_cycles == 1)
+      log << "Note: a single refinement cycle: Mesh refinement/Goals/Stop "
+             "at relative change has no cycle to compare with.\n";
 
     TimerOutput::Scope t(*timer, "refine");
     Timer              clock(communicator, true);

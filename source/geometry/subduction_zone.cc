@@ -255,10 +255,16 @@ namespace lithostress
       return radius * std::acos(std::clamp(unit(a) * unit(b), -1.0, 1.0));
     };
     const Point<2>     slab_base(x_on_circle(base, radius), base);
-    const unsigned int n_crust    = count(oceanic_crust),
-                       n_lid      = count(oceanic_lid - oceanic_crust);
+    const unsigned int n_crust = count(oceanic_crust),
+                       n_lid   = count(oceanic_lid - oceanic_crust);
+    // At least two cells through the upper crust: in the thesis's section
+    // (10 km below land at sea level) their line lies 5 km down, at the
+    // sea floor's depth, where the stripped load of density stripping
+    // against the oceanic column jumps (water above, crust below). A jump
+    // of the load inside a cell is invisible to the stress-recovery and
+    // goal-oriented indicators, which would then never refine there.
     unsigned int n_continental[3] = {
-      std::max(count(continental_elastic), count(arc_length(trench, p1))),
+      std::max({2u, count(continental_elastic), count(arc_length(trench, p1))}),
       std::max(count(continental_crust - continental_elastic),
                count(arc_length(p1, p2))),
       std::max({count(sea_floor - oceanic_lid - base),

@@ -482,21 +482,41 @@ namespace lithostress
       }
     else
       {
-        if (marking == Marking::fraction_of_error &&
-            indicator == Indicator::goal_oriented)
+        if (indicator == Indicator::goal_oriented)
           {
-            // Every goal gets its own Dörfler set (their union is refined):
-            // a goal whose error is small against another's in absolute
-            // terms still converges (Mommer & Stevenson 2009 mark the
-            // union of the primal and dual sets for the same reason).
+            // Every goal gets its own set of cells (their union is
+            // refined): a goal whose error is small against another's in
+            // absolute terms still converges (Mommer & Stevenson 2009 mark
+            // the union of the primal and dual sets for the same reason).
+            // Dörfler: each goal's set carries the refine fraction of its
+            // error; fraction of cells: each goal's share of the fraction.
             const std::vector<Vector<float>> per_goal = goal_indicators(
               dof_handler, fe_space, stress_model, solution, duals, weights);
             Vector<float> eta(per_goal[0].size());
             for (const Vector<float> &goal : per_goal)
               eta += goal;
-            mark_fraction_of_error(tria, eta);
-            for (const Vector<float> &goal : per_goal)
-              mark_fraction_of_error(tria, goal, false);
+            if (marking == Marking::fraction_of_error)
+              {
+                mark_fraction_of_error(tria, eta);
+                for (const Vector<float> &goal : per_goal)
+                  mark_fraction_of_error(tria, goal, false);
+              }
+            else
+              {
+                for (const Vector<float> &goal : per_goal)
+                  parallel::distributed::GridRefinement::
+                    refine_and_coarsen_fixed_number(
+                      tria, goal, refine_fraction / per_goal.size(), 0);
+                for (const auto &cell : tria.active_cell_iterators())
+                  if (cell->is_locally_owned())
+                    cell->clear_coarsen_flag();
+                if (coarsen_fraction > 0)
+                  parallel::distributed::GridRefinement::
+                    refine_and_coarsen_fixed_number(tria,
+                                                    eta,
+                                                    0,
+                                                    coarsen_fraction);
+              }
             for (const auto &cell : tria.active_cell_iterators())
               if (cell->is_locally_owned() && cell->refine_flag_set())
                 cell->clear_coarsen_flag();

@@ -89,7 +89,6 @@ expected = {
     "goal_oriented_without_goals": "Mesh refinement/Indicator>: `goal oriented` needs the goals",
     "goal_unknown_component": "Mesh refinement/Goals/Stress averages>: goal `crust`: unknown component `sigma_rr`",
     "goal_box_outside_body": "Mesh refinement/Goals/Stress averages>: the box of goal `crust` does not meet the body",
-    "goal_stop_one_cycle": "Mesh refinement/Goals/Stop at relative change>: needs Mesh refinement/Number of cycles of 2 or more",
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",
     "gmsh_missing_node": "gmsh_missing_node.msh>: While creating cell 11 (which is numbered as 12 in the input file), you are referencing a vertex with index 19",

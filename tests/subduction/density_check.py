@@ -21,6 +21,10 @@ After 5 Myr:
   eta/G = 0.93 Myr, still drives the mantle at 5 Myr) and the elastic upper crust's horizontal deviatoric
   tension grows (thesis: 22.5 -> 38 MPa).
 * The same answer on 1 and 2 ranks (1e-8 of the largest stress).
+Goal-oriented refinement (the .prm file's cycles, elastic):
+* The cycles stop once the goals (right-edge crust, trench, outer rise)
+  changed by < 1 % while the DoFs doubled, and the goals then agree with
+  the uniformly refined mesh's to 1 %.
 """
 import math
 import os
@@ -30,7 +34,8 @@ sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from lithotest import SOURCE, check, finish, read_csv, run  # noqa: E402
 
 PRM = os.path.join(os.path.dirname(SOURCE), "prm", "subduction_density.prm")
-QUIET = ["Mesh refinement/Initial global refinement=0", "Output/Write ParaView files=false",
+QUIET = ["Mesh refinement/Initial global refinement=0", "Mesh refinement/Number of cycles=1",
+         "Output/Write ParaView files=false",
          "Output/Figures/Enabled=false"]
 # Report points: the right edge at 2.5 ... 30 km depth and at 60 km,
 # beneath the trench.
@@ -85,4 +90,25 @@ diff = max(abs(a[k] - b[k]) for a, b in zip(outs[1], outs[2]) for k in ("s_xx", 
 check(len(outs[1]) == len(outs[2]) and diff <= 1e-8 * scale,
       "1 and 2 ranks agree at every point and time (largest difference %.1e of %.1f MPa)"
       % (diff / scale, scale / 1e6))
+
+# The .prm file's goal-oriented cycles (elastic): they stop once the goals
+# changed by < 1 % while the DoFs doubled, and then agree with the
+# uniformly refined mesh (16 908 DoFs) to 1 %.
+GOALS = ("right_crust", "trench", "rise")
+adaptive_out = os.path.abspath("output_subduction_density_goals")
+result = run(PRM, adaptive_out, 1, ["Time stepping/Enabled=false", "Output/Write ParaView files=false",
+                                    "Output/Figures/Enabled=false"])
+adaptive = read_csv(os.path.join(adaptive_out, "convergence.csv"))
+uniform_out = os.path.abspath("output_subduction_density_uniform")
+run(PRM, uniform_out, 1, ["Time stepping/Enabled=false", "Output/Write ParaView files=false",
+                          "Output/Figures/Enabled=false", "Mesh refinement/Number of cycles=1",
+                          "Mesh refinement/Initial global refinement=1"])
+uniform = read_csv(os.path.join(uniform_out, "convergence.csv"))[-1]
+last = adaptive[-1]
+worst = max(abs(last[g] - uniform[g]) / abs(uniform[g]) for g in GOALS)
+check("refinement cycles done" in result.stdout and len(adaptive) < 8 and worst < 0.01,
+      "goal-oriented cycles stop after %d at %d DoFs; right_crust %.2f MPa (thesis 22.5 at 5-10 km), "
+      "trench %.1f MPa, rise %.2f MPa, within %.2f %% of the uniform mesh's (%d DoFs)"
+      % (len(adaptive), last["dofs"], last["right_crust"] / 1e6, last["trench"] / 1e6,
+         last["rise"] / 1e6, 100 * worst, uniform["dofs"]))
 finish()

@@ -50,7 +50,8 @@ sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from lithotest import SOURCE, check, finish, read_csv, run  # noqa: E402
 
 PRM_DIR = os.path.join(os.path.dirname(SOURCE), "prm")
-QUIET = ["Mesh refinement/Initial global refinement=0", "Output/Write ParaView files=false",
+QUIET = ["Mesh refinement/Initial global refinement=0", "Mesh refinement/Number of cycles=1",
+         "Output/Write ParaView files=false",
          "Output/Figures/Enabled=false", "Time stepping/Enabled=false",
          "Output/Stress-depth profiles=1, 659.7, 780, 919", "Output/Points per profile=96"]
 MPA = 1e-6

@@ -22,7 +22,8 @@ from lithotest import SOURCE, check, finish, read_csv, run  # noqa: E402
 
 PRM_DIR = os.path.join(os.path.dirname(SOURCE), "prm")
 MSH = os.path.join(PRM_DIR, "subduction_section.msh")
-QUIET = ["Output/Write ParaView files=false", "Output/Figures/Enabled=false",
+QUIET = ["Mesh refinement/Number of cycles=1", "Output/Write ParaView files=false",
+         "Output/Figures/Enabled=false",
          "Time stepping/Enabled=false", "Output/Stress-depth profiles=1, 500, 780, 919"]
 TWIN = ["Geometry/Model=gmsh", "Geometry/Gmsh/Mesh file=" + MSH,
         "Geometry/Gmsh/Fault curves=plate_boundary",
