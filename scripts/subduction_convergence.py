@@ -22,7 +22,7 @@ where the .prm files' own stopping rule (the goals change by < 1 % while
 the DoFs double) ends the cycles.
 
 Usage: subduction_convergence.py OUTDIR [--binary PATH] [--only NAME,...]
-                                 [--levels 4] [--cycles 6]
+                                 [--levels 4] [--cycles 6] [--measure-only]
 """
 import argparse
 import csv
@@ -60,8 +60,8 @@ def keys_of(name):
     return ["goal "]
 
 
-def measure_once(binary, name, prm, sets, directory):
-    stats = rs.run(binary, prm, directory, sets, True, 1)
+def measure_once(binary, name, prm, sets, directory, measure_only=False):
+    stats = rs.run(binary, prm, directory, sets, True, 1, measure_only)
     table = rs.Table()
     rs.measure(table, name, directory, "elastic", {})
     values = {}
@@ -83,6 +83,8 @@ def main():
     parser.add_argument("--only", default="")
     parser.add_argument("--levels", type=int, default=4)
     parser.add_argument("--cycles", type=int, default=6)
+    parser.add_argument("--measure-only", action="store_true",
+                        help="measure the runs already in OUTDIR again, without running them")
     args = parser.parse_args()
     outdir = os.path.abspath(args.outdir)
     os.makedirs(outdir, exist_ok=True)
@@ -103,12 +105,14 @@ def main():
             for level, extra in runs:
                 d = os.path.join(outdir, "%s_%s_%d" % (name, strategy, level))
                 stats, values = measure_once(args.binary, name, prm,
-                                             list(sets) + extra + ["Output/Figures/Enabled=false"], d)
+                                             list(sets) + extra + ["Output/Figures/Enabled=false"], d,
+                                             args.measure_only)
                 results[strategy].append((level, stats, values))
                 print("%-20s %-9s %d: %6d DoFs" % (name, strategy, level, stats["dofs"]), flush=True)
         # Where the .prm file's own rule stops the cycles.
         d = os.path.join(outdir, "%s_stop" % name)
-        stats = rs.run(args.binary, prm, d, list(sets) + ["Output/Figures/Enabled=false"], True, 1)
+        stats = rs.run(args.binary, prm, d, list(sets) + ["Output/Figures/Enabled=false"], True, 1,
+                       args.measure_only)
         with open(os.path.join(d, "convergence.csv")) as f:
             stopped = list(csv.DictReader(f))
         summary[(name, "stop")] = {"cycles": len(stopped), "dofs": stats["dofs"]}
