@@ -41,6 +41,10 @@ Thermal anomaly (§7.6.2):
   130 MPa).
 * The stress is linear in alpha: the linear reading of alpha gives exactly
   3 times the volumetric reading's stresses (1e-8).
+Goal-oriented refinement with the frictional plate boundary (k_s 1e9):
+* The .prm file's cycles stop once the goals changed by < 1 % while the
+  DoFs doubled; the goals then agree with the once-refined uniform mesh's
+  to 1 %.
 """
 import math
 import os
@@ -193,4 +197,26 @@ ratio_error = max(abs(a["sigma_xx"] - 3 * b["sigma_xx"]) for a, b in zip(above, 
 check(ratio_error <= 1e-8 * abs(deepest["sigma_xx"]),
       "thermal: the linear reading of alpha gives 3 x the volumetric reading's stress "
       "(to %.1e of the largest)" % (ratio_error / abs(deepest["sigma_xx"])))
+
+# Goal-oriented refinement with a frictional plate boundary (the dual
+# problems on the stuck springs, solved directly): the .prm file's cycles
+# stop once the goals changed by < 1 % while the DoFs doubled, and agree
+# with the uniformly refined mesh's to 1 %.
+GOALS = ("left_lid", "right_crust", "right_mantle", "forearc")
+cycled = os.path.abspath("output_subduction_coupling_goals")
+result = run(os.path.join(PRM_DIR, "subduction_coupling.prm"), cycled, 1,
+             ["Faults/plate_boundary/Shear stiffness=1e9", "Output/Write ParaView files=false",
+              "Output/Figures/Enabled=false", "Time stepping/Enabled=false"])
+cycles = read_csv(os.path.join(cycled, "convergence.csv"))
+fine = os.path.abspath("output_subduction_coupling_uniform")
+run(os.path.join(PRM_DIR, "subduction_coupling.prm"), fine, 1,
+    ["Faults/plate_boundary/Shear stiffness=1e9", "Output/Write ParaView files=false",
+     "Output/Figures/Enabled=false", "Time stepping/Enabled=false",
+     "Mesh refinement/Number of cycles=1", "Mesh refinement/Initial global refinement=1"])
+uniform = read_csv(os.path.join(fine, "convergence.csv"))[-1]
+worst = max(abs(cycles[-1][g] - uniform[g]) / abs(uniform[g]) for g in GOALS)
+check("refinement cycles done" in result.stdout and len(cycles) < 8 and worst < 0.01,
+      "coupling 1e9, goal-oriented: the cycles stop after %d at %d DoFs, goals within %.2f %% "
+      "of the uniform mesh's (%d DoFs)" % (len(cycles), cycles[-1]["dofs"], 100 * worst,
+                                          uniform["dofs"]))
 finish()
