@@ -14,6 +14,24 @@
 
 namespace lithostress
 {
+  namespace
+  {
+    /** The stress every result reports (initial strains and creep
+     * included), as the stress-recovery indicator takes it. */
+    template <int dim>
+    typename MeshRefinement<dim>::StressOf
+    reported_stress_of(const StressModel<dim> &stress_model)
+    {
+      return [&stress_model](
+               const typename Triangulation<dim>::active_cell_iterator &cell,
+               const Point<dim>                                        &unit,
+               const Point<dim>                                        &p,
+               const SymmetricTensor<2, dim> &strain) {
+        return stress_model.stress(cell, unit, p, strain).in_plane;
+      };
+    }
+  } // namespace
+
   template <int dim>
   void
   MeshRefinement<dim>::declare_parameters(ParameterHandler &prm)
@@ -109,15 +127,9 @@ namespace lithostress
     const std::vector<TrilinosWrappers::MPI::Vector> &duals,
     const std::vector<double>                        &weights) const
   {
-    const auto   &tria = dof_handler.get_triangulation();
-    Vector<float> eta(tria.n_active_cells());
-    const auto    reported_stress =
-      [&](const typename Triangulation<dim>::active_cell_iterator &cell,
-          const Point<dim>                                        &unit,
-          const Point<dim>                                        &p,
-          const SymmetricTensor<2, dim>                           &strain) {
-        return stress_model.stress(cell, unit, p, strain).in_plane;
-      };
+    const auto    &tria = dof_handler.get_triangulation();
+    Vector<float>  eta(tria.n_active_cells());
+    const StressOf reported_stress = reported_stress_of(stress_model);
     if (indicator == Indicator::stress_recovery)
       return stress_recovery(
         dof_handler, fe_space, stress_model, solution, reported_stress);
@@ -155,17 +167,12 @@ namespace lithostress
     AssertThrow(!duals.empty() && duals.size() == weights.size(),
                 ExcMessage("the goal-oriented indicator needs the dual "
                            "solutions of the goals"));
-    const Vector<float> primal = stress_recovery(
-      dof_handler,
-      fe_space,
-      stress_model,
-      solution,
-      [&](const typename Triangulation<dim>::active_cell_iterator &cell,
-          const Point<dim>                                        &unit,
-          const Point<dim>                                        &p,
-          const SymmetricTensor<2, dim>                           &strain) {
-        return stress_model.stress(cell, unit, p, strain).in_plane;
-      });
+    const Vector<float> primal =
+      stress_recovery(dof_handler,
+                      fe_space,
+                      stress_model,
+                      solution,
+                      reported_stress_of(stress_model));
     // The dual's stress is the linear law of the operator it solved.
     const auto dual_stress =
       [&](const typename Triangulation<dim>::active_cell_iterator &cell,

@@ -419,21 +419,29 @@ namespace lithostress
   }
 
   template <int dim>
+  double
+  StressGoals<dim>::area(const unsigned int             k,
+                         const DoFHandler<dim>         &dof_handler,
+                         const FiniteElementSpace<dim> &fe_space) const
+  {
+    double area = 0;
+    integrate(k,
+              dof_handler,
+              fe_space,
+              [&](const auto &, const FEValues<dim> &fv, const unsigned q) {
+                area += fv.JxW(q);
+              });
+    return Utilities::MPI::sum(area, dof_handler.get_communicator());
+  }
+
+  template <int dim>
   void
   StressGoals<dim>::check_regions(const DoFHandler<dim>         &dof_handler,
                                   const FiniteElementSpace<dim> &fe_space) const
   {
     for (unsigned int k = 0; k < goals.size(); ++k)
       {
-        double area = 0;
-        integrate(k,
-                  dof_handler,
-                  fe_space,
-                  [&](const auto &, const FEValues<dim> &fv, const unsigned q) {
-                    area += fv.JxW(q);
-                  });
-        area = Utilities::MPI::sum(area, dof_handler.get_communicator());
-        if (!(area > 0))
+        if (!(area(k, dof_handler, fe_space) > 0))
           throw_input_error("Mesh refinement/Goals/Stress averages",
                             "the box of goal `" + goals[k].name +
                               "` does not meet the body");
@@ -525,15 +533,8 @@ namespace lithostress
   {
     rhs = 0;
     // The box's area first: J_k is a mean.
-    double area = 0;
-    integrate(k,
-              dof_handler,
-              fe_space,
-              [&](const auto &, const FEValues<dim> &fv, const unsigned q) {
-                area += fv.JxW(q);
-              });
-    area = Utilities::MPI::sum(area, dof_handler.get_communicator());
-    AssertThrow(area > 0, ExcMessage("a goal's box left the body"));
+    const double region = area(k, dof_handler, fe_space);
+    AssertThrow(region > 0, ExcMessage("a goal's box left the body"));
 
     // Cell by cell: the local vector of the cell's quadrature points inside
     // the box, distributed when the loop moves to the next cell.
@@ -569,7 +570,7 @@ namespace lithostress
                     local(i) += component_of<dim>(goals[k].component,
                                                   moduli.stress(strain),
                                                   moduli.sigma_zz(strain)) *
-                                fv.JxW(q) / area;
+                                fv.JxW(q) / region;
                   }
               });
     flush();

@@ -151,6 +151,12 @@ namespace lithostress
     component_name(const Component component);
 
   private:
+    /** The area of the part of the body in goal @p k's box (all ranks). */
+    double
+    area(const unsigned int             k,
+         const DoFHandler<dim>         &dof_handler,
+         const FiniteElementSpace<dim> &fe_space) const;
+
     /** Σ over the owned cells of f(cell, goal, unit point, point, JxW) for
      * the quadrature points inside goal @p k's box. */
     template <typename Integrand>
