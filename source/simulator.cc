@@ -666,26 +666,12 @@ namespace lithostress
                       std::max(std::abs(exact[k]), 1e-300),
                     ConvergenceStudy::Kind::error);
       }
-    // The change is measured against the last cycle with at most half as
-    // many DoFs: between two cycles that refine a handful of cells the
-    // goals hardly change whatever their error.
-    const std::vector<double> *before      = nullptr;
-    unsigned long long         before_dofs = 0;
-    for (const auto &[dofs, earlier] : goal_history)
-      if (2 * dofs <= statistics.dofs)
-        {
-          before      = &earlier;
-          before_dofs = dofs;
-        }
-    goals_converged = false;
-    if (before)
-      {
-        const auto [change, name] = goals.largest_change(*before, values);
-        line << "; largest change since " << before_dofs << " DoFs "
-             << std::setprecision(3) << 100 * change << " % (" << name << ")";
-        goals_converged = goals.converged(*before, values);
-      }
-    goal_history.emplace_back(statistics.dofs, values);
+    const auto change = goals.record_cycle(statistics.dofs, values);
+    if (change.compared_with > 0)
+      line << "; largest change since " << change.compared_with << " DoFs "
+           << std::setprecision(3) << 100 * change.change << " % ("
+           << change.goal << ")";
+    goals_converged = change.converged;
     log << line.str() << std::endl;
   }
 
@@ -886,14 +872,8 @@ namespace lithostress
     if (refinement.strategy == MeshRefinement<dim>::Strategy::adaptive &&
         refinement.indicator == MeshRefinement<dim>::Indicator::goal_oriented)
       {
-        const std::vector<double> values =
-          goals.values(dof_handler, *fe_space, *stress_model, solution);
-        double largest = 0;
-        for (const double v : values)
-          largest = std::max(largest, std::abs(v));
-        for (const double v : values)
-          weights.push_back(1 /
-                            std::max({std::abs(v), 1e-6 * largest, 1e-300}));
+        weights = StressGoals<dim>::weights(
+          goals.values(dof_handler, *fe_space, *stress_model, solution));
         SolverReport               report;
         const DiscreteProblem<dim> problem{dof_handler,
                                            *fe_space,

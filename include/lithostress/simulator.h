@@ -206,11 +206,8 @@ namespace lithostress
     /** Quantities of interest: goal-oriented refinement and the stopping
      * test of the cycles. */
     StressGoals<dim> goals;
-    /** The goals' values of every cycle with its DoFs, and whether the
-     * last changed by less than the stop tolerance from the last cycle
-     * with at most half as many DoFs. */
-    std::vector<std::pair<unsigned long long, std::vector<double>>>
-                 goal_history;
+    /** Whether the last cycle's goals changed by less than the stop
+     * tolerance (StressGoals::record_cycle()). */
     bool         goals_converged = false;
     MemoryBudget memory_budget;
     /** The cycle being computed (for the message of an interrupted run). */

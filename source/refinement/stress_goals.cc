@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <tuple>
 
 namespace lithostress
 {
@@ -600,6 +601,41 @@ namespace lithostress
   {
     return tolerance > 0 && !goals.empty() && previous.size() == goals.size() &&
            largest_change(previous, current).first < tolerance;
+  }
+
+  template <int dim>
+  typename StressGoals<dim>::CycleChange
+  StressGoals<dim>::record_cycle(const unsigned long long   dofs,
+                                 const std::vector<double> &values)
+  {
+    CycleChange                result;
+    const std::vector<double> *before = nullptr;
+    for (const auto &[earlier_dofs, earlier] : history)
+      if (2 * earlier_dofs <= dofs)
+        {
+          before               = &earlier;
+          result.compared_with = earlier_dofs;
+        }
+    if (before)
+      {
+        std::tie(result.change, result.goal) = largest_change(*before, values);
+        result.converged                     = converged(*before, values);
+      }
+    history.emplace_back(dofs, values);
+    return result;
+  }
+
+  template <int dim>
+  std::vector<double>
+  StressGoals<dim>::weights(const std::vector<double> &values)
+  {
+    double largest = 0;
+    for (const double v : values)
+      largest = std::max(largest, std::abs(v));
+    std::vector<double> result;
+    for (const double v : values)
+      result.push_back(1 / std::max({std::abs(v), 1e-6 * largest, 1e-300}));
+    return result;
   }
 
   template class StressGoals<2>;

@@ -140,6 +140,34 @@ namespace lithostress
     converged(const std::vector<double> &previous,
               const std::vector<double> &current) const;
 
+    /** What record_cycle() found: the largest relative change of a goal
+     * since the last cycle with at most half as many DoFs (that cycle's
+     * DoFs; 0 if there is none yet), and whether it is below the stop
+     * tolerance. */
+    struct CycleChange
+    {
+      unsigned long long compared_with = 0;
+      double             change        = 0;
+      std::string        goal;
+      bool               converged = false;
+    };
+
+    /**
+     * Record the goals' values @p values of a cycle with @p dofs DoFs and
+     * compare them with the last recorded cycle that had at most half as
+     * many DoFs: between two cycles that refine a handful of cells the
+     * goals hardly change whatever their error.
+     */
+    CycleChange
+    record_cycle(const unsigned long long   dofs,
+                 const std::vector<double> &values);
+
+    /** The weights 1/|J_i| of the goal-oriented indicator (relative
+     * accuracy of every goal; a goal near zero is weighted as 1e-6 of the
+     * largest). */
+    static std::vector<double>
+    weights(const std::vector<double> &values);
+
     /** The largest relative change from @p previous to @p current, and the
      * goal that has it. */
     std::pair<double, std::string>
@@ -168,6 +196,8 @@ namespace lithostress
 
     std::vector<Goal> goals;
     double            tolerance = 0;
+    /** The recorded cycles: DoFs and the goals' values. */
+    std::vector<std::pair<unsigned long long, std::vector<double>>> history;
     /** Per goal, the quadrature (unit cell) of each cell its box cuts, on
      * the present mesh; cleared when the mesh changes. */
     mutable std::vector<std::map<CellId, Quadrature<dim>>> cut_cells;
