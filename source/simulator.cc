@@ -502,14 +502,7 @@ namespace lithostress
     // the ghosted solution is made after it: the peak memory of the solve
     // holds neither.
     TrilinosWrappers::MPI::Vector owned_solution;
-    const DiscreteProblem<dim>    problem{dof_handler,
-                                       *fe_space,
-                                       system,
-                                       *stress_model,
-                                       loads,
-                                       prescribed_displacement,
-                                       keep_solver_setup,
-                                       operator_version()};
+    const DiscreteProblem<dim>    problem = discrete_problem();
     if (faults.frictional())
       {
         try
@@ -557,6 +550,20 @@ namespace lithostress
     statistics.solve_time =
       clock.wall_time() - statistics.solver.benchmark_time;
     statistics.benchmark_time += statistics.solver.benchmark_time;
+  }
+
+  template <int dim>
+  DiscreteProblem<dim>
+  Simulator<dim>::discrete_problem()
+  {
+    return {dof_handler,
+            *fe_space,
+            system,
+            *stress_model,
+            loads,
+            prescribed_displacement,
+            keep_solver_setup,
+            operator_version()};
   }
 
   template <int dim>
@@ -874,17 +881,9 @@ namespace lithostress
       {
         weights = StressGoals<dim>::weights(
           goals.values(dof_handler, *fe_space, *stress_model, solution));
-        SolverReport               report;
-        const DiscreteProblem<dim> problem{dof_handler,
-                                           *fe_space,
-                                           system,
-                                           *stress_model,
-                                           loads,
-                                           prescribed_displacement,
-                                           keep_solver_setup,
-                                           operator_version()};
-        duals =
-          solve_dual_problems(goals, problem, *linear_solver, faults, report);
+        SolverReport report;
+        duals = solve_dual_problems(
+          goals, discrete_problem(), *linear_solver, faults, report);
         log << "  goal-oriented refinement: " << duals.size()
             << " dual solutions, " << report.solver << ' ' << report.iterations
             << " it" << std::endl;

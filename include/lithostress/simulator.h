@@ -110,6 +110,10 @@ namespace lithostress
     assemble_system();
     void
     solve();
+    /** The discrete problem of the present mesh, operator and system, for
+     * the solvers (the solution's and the goals' dual problems). */
+    DiscreteProblem<dim>
+    discrete_problem();
     void
     postprocess(const unsigned int cycle);
     /** The goals' values of this cycle: convergence table, log, and

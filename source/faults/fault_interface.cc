@@ -536,10 +536,7 @@ namespace lithostress
           const Tensor<1, dim> &jump,
           Tensor<1, dim>       &traction,
           Tensor<2, dim>       &tangent) {
-        const CoulombFriction &law = faults[point.fault].friction;
-        tangent =
-          law.shear_stiffness * outer_product(point.shear, point.shear) +
-          law.normal_stiffness * outer_product(point.normal, point.normal);
+        tangent  = stuck_tangent(point);
         traction = tangent * jump;
       },
       matrix,

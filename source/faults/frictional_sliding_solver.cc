@@ -173,10 +173,9 @@ namespace lithostress
                                                   const Tensor<1, dim> &w,
                                                   Tensor<1, dim>       &t,
                                                   Tensor<2, dim>       &D) {
-        const CoulombFriction &law = faults.friction(p.fault);
-        D = law.shear_stiffness * outer_product(p.shear, p.shear) +
-            law.normal_stiffness * outer_product(p.normal, p.normal);
-        t           = D * w - law.shear_stiffness * slip[i] * p.shear;
+        D = faults.stuck_tangent(p);
+        t =
+          D * w - faults.friction(p.fault).shear_stiffness * slip[i] * p.shear;
         tangents[i] = D;
         affine[i]   = t - D * w;
       };

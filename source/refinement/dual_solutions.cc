@@ -48,9 +48,7 @@ namespace lithostress
                     const Tensor<1, dim> &w,
                     Tensor<1, dim>       &t,
                     Tensor<2, dim>       &D) {
-            const CoulombFriction &law = faults.friction(p.fault);
-            D = law.shear_stiffness * outer_product(p.shear, p.shear) +
-                law.normal_stiffness * outer_product(p.normal, p.normal);
+            D = faults.stuck_tangent(p);
             t = D * w;
           },
           &stuck,

@@ -178,6 +178,16 @@ namespace lithostress
       return faults[k].friction;
     }
 
+    /** The stiffness of the law at @p point while it sticks (the elastic
+     * law): D = k_s s⊗s + k_n n⊗n, in the (x, y) frame. */
+    Tensor<2, dim>
+    stuck_tangent(const InterfacePoint &point) const
+    {
+      const CoulombFriction &law = friction(point.fault);
+      return law.shear_stiffness * outer_product(point.shear, point.shear) +
+             law.normal_stiffness * outer_product(point.normal, point.normal);
+    }
+
     /** The trace of fault @p k. */
     const FaultTrace &
     trace(const unsigned int k) const
