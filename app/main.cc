@@ -8,7 +8,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
-#include <lithostress/simulator.h>
+#include <lithostress/simulator/simulator.h>
 
 #include <iostream>
 #include <string>

@@ -3,7 +3,8 @@
 against time at the report points of OUTDIR/point_history.csv, computed
 (markers), exact for the model (lines, tests/viscoelastic/
 cylinder_reference.py, resolved shell) and the thesis's printed curves
-(dashed, sign of the 0.1583 term corrected, SPEC §4).
+(dashed, sign of the 0.1583 term corrected, see
+doc/viscoelastic_cylinder_derivation.md).
 
 Usage: python3 scripts/plot_cylinder.py OUTDIR [PNG]
 (PNG defaults to OUTDIR/cylinder_stresses.png). Needs python3-matplotlib.

@@ -1,8 +1,8 @@
 #!/usr/bin/python3
 """The subduction-zone experiments of thesis chapter 7, number by number.
 
-Runs the eleven configurations of SPEC §5.2 / issue 17, each elastic and
-after 5 Myr of visco-elastic relaxation:
+Runs the eleven configurations of thesis §7.3-7.6 / issue 17, each elastic
+and after 5 Myr of visco-elastic relaxation:
 
   density              prm/subduction_density.prm       (§7.3)
   slab_pull_90 ... _27 prm/subduction_slab_pull.prm     (§7.4, dips 90,
@@ -17,8 +17,8 @@ after 5 Myr of visco-elastic relaxation:
 and writes
 
   OUTDIR/subduction_comparison.csv  experiment,quantity,ours,thesis,unit:
-      one row for every number SPEC §5.2 quotes (thesis empty where the
-      thesis gives none, e.g. after 5 Myr for §7.5 and §7.6), and one for
+      one row for every number thesis §7.3-7.6 quotes (thesis empty where
+      the thesis gives none, e.g. after 5 Myr for §7.5 and §7.6), and one for
       each goal of the .prm files (regional means over boxes), converged by
       goal-oriented adaptive refinement from the coarse mesh until they
       change by < 1 % while the DoFs double
@@ -331,7 +331,7 @@ def measure(table, name, directory, stage, thesis):
             float(away.sum()), "nodes")
 
 
-# The thesis's numbers (SPEC §5.2) by experiment, stage and quantity key.
+# The thesis's numbers (§7.3-7.6) by experiment, stage and quantity key.
 THESIS = {
     ("density", "elastic"): {"right_tension": 22.5, "goal_right_crust": 22.5,
                              "right_tension_depth": "5-10",

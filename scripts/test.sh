@@ -24,4 +24,4 @@ if [ "$sanitize" = ON ]; then
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 fi
 cd "$root/$dir"
-ctest --output-on-failure -j1 "$@"
+ctest --output-on-failure -j"$(nproc)" "$@"

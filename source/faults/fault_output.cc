@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
+#include <lithostress/base/output_file.h>
 #include <lithostress/faults/fault_output.h>
-#include <lithostress/output/output_file.h>
 #include <lithostress/postprocess/stress_sampling.h>
 #include <lithostress/postprocess/surface_profile.h>
 
@@ -20,18 +20,13 @@ namespace lithostress
                const TrilinosWrappers::MPI::Vector &solution,
                const FaultSlipHistory              &history)
   {
-    using InterfacePoint = typename FaultInterface<dim>::InterfacePoint;
+    using PointValues = typename FaultInterface<dim>::PointValues;
     std::vector<FaultSample> samples;
-    faults.assemble_interface(
-      dof_handler,
-      fe_space,
-      AffineConstraints<double>(),
-      &solution,
-      [&](const unsigned int    i,
-          const InterfacePoint &p,
-          const Tensor<1, dim> &w,
-          Tensor<1, dim> &,
-          Tensor<2, dim> &) {
+    faults.for_each_interface_point(
+      dof_handler, fe_space, &solution, [&](const PointValues &values) {
+        const unsigned int     i          = values.index;
+        const auto            &p          = values.point;
+        const Tensor<1, dim>  &w          = values.jump;
         const CoulombFriction &law        = faults.friction(p.fault);
         const bool             frictional = law.slides;
         const Tensor<1, 2> down = faults.trace(p.fault).down_dip(p.position);
@@ -62,10 +57,7 @@ namespace lithostress
               sample.shear_traction = 0;
           }
         samples.push_back(sample);
-      },
-      nullptr,
-      nullptr,
-      nullptr);
+      });
     // All ranks' samples, sorted along the fault.
     const auto all =
       Utilities::MPI::all_gather(dof_handler.get_communicator(), samples);

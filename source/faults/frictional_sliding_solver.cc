@@ -121,167 +121,312 @@ namespace lithostress
           result += m[a][b] * outer_product(e[a], e[b]);
       return result;
     }
-  } // namespace
 
-  template <int dim>
-  void
-  FrictionalSlidingSolver<dim>::solve(
-    const DiscreteProblem<dim>             &problem,
-    const FaultInterface<dim>              &faults,
-    FaultSlipHistory                       &history,
-    TrilinosWrappers::MPI::Vector          &solution,
-    SolverReport                           &report,
-    const std::function<void(std::string)> &progress) const
-  {
-    using InterfacePoint = typename FaultInterface<dim>::InterfacePoint;
-    const DoFHandler<dim>           &dof_handler = problem.dof_handler;
-    const FiniteElementSpace<dim>   &fe_space    = problem.fe_space;
-    const LinearSystem<dim>         &system      = problem.system;
-    const AffineConstraints<double> &constraints = system.constraints;
-    const MPI_Comm communicator = dof_handler.get_communicator();
-    const bool     newton       = parameters.method == Method::newton;
-    report                      = SolverReport();
-    report.solver               = newton ? "newton" : "thesis";
-    report.linear_solves        = 0;
-    Timer timer(communicator, true);
+    /**
+     * What the two methods of FrictionalSlidingSolver share (thesis §5.5,
+     * FSHEAR, and the Newton method that replaces it): the problem with
+     * its faults, the slip history, the iterate u with its residual, the
+     * law each solve linearised, the linearised system and its solver, the
+     * report and the progress log.
+     */
+    template <int dim>
+    class SlidingContext
+    {
+    public:
+      using Settings    = typename FrictionalSlidingSolver<dim>::Settings;
+      using PointValues = typename FaultInterface<dim>::PointValues;
+      /** An interface law at a point: the traction @p t and its tangent
+       * @p D = ∂t/∂w at the point's jump. */
+      using Law = std::function<
+        void(const PointValues &, Tensor<1, dim> &t, Tensor<2, dim> &D)>;
 
-    std::vector<double>       distances;
-    std::vector<unsigned int> fault_of_point;
-    for (const InterfacePoint &p :
-         faults.interface_quadrature(dof_handler, fe_space))
-      {
-        distances.push_back(p.distance);
-        fault_of_point.push_back(p.fault);
-      }
-    const unsigned int n_points = distances.size();
-    history.reinit(fault_of_point,
-                   distances,
-                   problem.operator_version >> 32,
-                   communicator);
-    // The law each solve linearised (t = D w + c per point) and the return
-    // mapping's response at the last evaluated iterate.
-    std::vector<Tensor<2, dim>>            tangents(n_points);
-    std::vector<Tensor<1, dim>>            affine(n_points);
-    std::vector<CoulombFriction::Response> responses(n_points);
-    // The thesis method's slip, updated by the excess shear.
-    std::vector<double> thesis_slip = history.slip;
-    std::vector<bool>   slid(n_points, false);
+      /** The context of a solve of @p problem with @p faults from the
+       * committed slip of @p history (reinitialised for this mesh's
+       * interface points), from u = the constraints' inhomogeneities. */
+      SlidingContext(const Settings                         &settings,
+                     const DiscreteProblem<dim>             &problem,
+                     const FaultInterface<dim>              &faults,
+                     FaultSlipHistory                       &history,
+                     SolverReport                           &report,
+                     const std::function<void(std::string)> &progress);
 
-    const auto stuck_law = [&](const std::vector<double> &slip) {
-      return [&faults, &slip, &tangents, &affine](const unsigned int    i,
-                                                  const InterfacePoint &p,
-                                                  const Tensor<1, dim> &w,
-                                                  Tensor<1, dim>       &t,
-                                                  Tensor<2, dim>       &D) {
-        D = faults.stuck_tangent(p);
-        t =
-          D * w - faults.friction(p.fault).shear_stiffness * slip[i] * p.shear;
-        tangents[i] = D;
-        affine[i]   = t - D * w;
-      };
+      /** The elastic law with the slip @p slip per point (thesis §5.5: the
+       * fault stays elastic, its slip moves the springs' rest length),
+       * recorded as the law the next solve linearises. */
+      Law
+      stuck_law(const std::vector<double> &slip);
+
+      /** The Coulomb law's return mapping from the committed slip at the
+       * point @p values (CoulombFriction::respond), its response kept. */
+      void
+      return_mapping(const PointValues &values,
+                     Tensor<1, dim>    &t,
+                     Tensor<2, dim>    &D);
+
+      /** The return mapping, recorded as the law the next solve
+       * linearises (the Newton tangent). */
+      void
+      newton_law(const PointValues &values,
+                 Tensor<1, dim>    &t,
+                 Tensor<2, dim>    &D);
+
+      /** The residual norm ‖K u − f + ∫[v]·t(u)‖ (constrained rows left
+       * out) at @p owned, with the return mapping from the committed slip;
+       * u_ghost gets @p owned, excess the largest excess shear against the
+       * law of the last solve. */
+      double
+      residual_norm(const TrilinosWrappers::MPI::Vector &owned);
+
+      /** The system of the law @p law linearised at u_ghost (the bulk
+       * matrix with ∫[v]·D[u], the right-hand side less the affine part),
+       * and its AMG. */
+      void
+      set_up(const Law &law);
+
+      /** The right-hand side with the affine part of @p law at zero jump
+       * (the thesis method: only the slip changes between its solves). */
+      void
+      assemble_rhs(const Law &law);
+
+      /** Solve the linearised system for @p x (GMRES with the AMG, ILU
+       * smoothing, Chebyshev if that stalls; or directly), with the
+       * constraints distributed. */
+      void
+      linear_solve(TrilinosWrappers::MPI::Vector &x);
+
+      /** "<n> sliding, <m> open of <N> points" over all ranks. */
+      std::string
+      count_states() const;
+
+      const Settings                         &settings;
+      const FaultInterface<dim>              &faults;
+      FaultSlipHistory                       &history;
+      SolverReport                           &report;
+      const std::function<void(std::string)> &progress;
+      const DoFHandler<dim>                  &dof_handler;
+      const FiniteElementSpace<dim>          &fe_space;
+      const LinearSystem<dim>                &system;
+      const AffineConstraints<double>        &constraints;
+      const MPI_Comm                          communicator;
+      unsigned int                            n_points = 0;
+      // The law each solve linearised (t = D w + c per point) and the
+      // return mapping's response at the last evaluated iterate.
+      std::vector<Tensor<2, dim>>            tangents;
+      std::vector<Tensor<1, dim>>            affine;
+      std::vector<CoulombFriction::Response> responses;
+      TrilinosWrappers::MPI::Vector          u, u_ghost, rhs, residual, force;
+      /** ‖f‖; the last residual norm; the last excess shear [Pa]. */
+      double f = 0, r_norm = 0, excess = 0;
+      /** The last iteration. */
+      unsigned int iteration = 0;
+
+    private:
+      TrilinosWrappers::SparseMatrix      matrix;
+      std::unique_ptr<Epetra_MultiVector> modes;
+      TrilinosWrappers::PreconditionAMG   amg;
+      typename AMGSolver<dim>::Settings   ilu_settings, chebyshev_settings;
     };
-    const auto return_mapping = [&](const unsigned int    i,
-                                    const InterfacePoint &p,
-                                    const Tensor<1, dim> &w,
-                                    Tensor<1, dim>       &t,
-                                    Tensor<2, dim>       &D) {
-      responses[i] = faults.friction(p.fault).respond(w * p.shear,
+
+    template <int dim>
+    SlidingContext<dim>::SlidingContext(
+      const Settings                         &settings,
+      const DiscreteProblem<dim>             &problem,
+      const FaultInterface<dim>              &faults,
+      FaultSlipHistory                       &history,
+      SolverReport                           &report,
+      const std::function<void(std::string)> &progress)
+        : settings(settings)
+        , faults(faults)
+        , history(history)
+        , report(report)
+        , progress(progress)
+        , dof_handler(problem.dof_handler)
+        , fe_space(problem.fe_space)
+        , system(problem.system)
+        , constraints(problem.system.constraints)
+        , communicator(problem.dof_handler.get_communicator())
+        , u(problem.system.locally_owned, communicator)
+        , u_ghost(problem.system.locally_owned,
+                  problem.system.locally_relevant,
+                  communicator)
+        , rhs(problem.system.rhs)
+        , residual(problem.system.rhs)
+        , force(problem.system.rhs)
+    {
+      std::vector<double>       distances;
+      std::vector<unsigned int> fault_of_point;
+      for (const auto &p : faults.interface_quadrature(dof_handler, fe_space))
+        {
+          distances.push_back(p.distance);
+          fault_of_point.push_back(p.fault);
+        }
+      n_points = distances.size();
+      history.reinit(fault_of_point,
+                     distances,
+                     problem.operator_version >> 32,
+                     communicator);
+      tangents.resize(n_points);
+      affine.resize(n_points);
+      responses.resize(n_points);
+      u = 0;
+      constraints.distribute(u);
+      u_ghost = u;
+      f       = std::max(system.rhs.l2_norm(), 1e-300);
+      check_right_hand_side(f);
+      // A fault's normal spring is far stiffer than the rock next to it
+      // (thesis: 1e15 N/m, i.e. k_n l / E h ~ 1e3): it ties the two fields'
+      // DoFs at each fault node into stiff pairs, which point smoothers
+      // (Chebyshev, Gauss-Seidel) damp poorly -- about 400 GMRES iterations
+      // per solve on the normal fault -- and ILU smoothing takes together:
+      // 45-55 per solve from 7 k to 416 k DoFs (doc/faults.md). ILU(0) of a
+      // sliding tangent can fail, though (the thrust fault): a solve that
+      // has not converged after 300 iterations goes on with the Chebyshev
+      // smoother. Neither is symmetric here: every solve is GMRES.
+      ilu_settings.smoother = "ILU";
+    }
+
+    template <int dim>
+    typename SlidingContext<dim>::Law
+    SlidingContext<dim>::stuck_law(const std::vector<double> &slip)
+    {
+      return [this, &slip](const PointValues &values,
+                           Tensor<1, dim>    &t,
+                           Tensor<2, dim>    &D) {
+        const auto        &p = values.point;
+        const unsigned int i = values.index;
+        D                    = faults.stuck_tangent(p);
+        t                    = D * values.jump -
+            faults.friction(p.fault).shear_stiffness * slip[i] * p.shear;
+        tangents[i] = D;
+        affine[i]   = t - D * values.jump;
+      };
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::return_mapping(const PointValues &values,
+                                        Tensor<1, dim>    &t,
+                                        Tensor<2, dim>    &D)
+    {
+      const auto           &p = values.point;
+      const Tensor<1, dim> &w = values.jump;
+      const unsigned int    i = values.index;
+      responses[i]            = faults.friction(p.fault).respond(w * p.shear,
                                                       w * p.normal,
                                                       history.slip[i],
                                                       p.depth);
-      t            = responses[i].shear_traction * p.shear +
+      t                       = responses[i].shear_traction * p.shear +
           responses[i].normal_traction * p.normal;
       D = from_local_frame<dim>(responses[i].tangent, p.shear, p.normal);
-    };
-    const auto newton_law = [&](const unsigned int    i,
-                                const InterfacePoint &p,
-                                const Tensor<1, dim> &w,
-                                Tensor<1, dim>       &t,
-                                Tensor<2, dim>       &D) {
-      return_mapping(i, p, w, t, D);
-      tangents[i] = D;
-      affine[i]   = t - D * w;
-    };
+    }
 
-    TrilinosWrappers::MPI::Vector u(system.locally_owned, communicator),
-      u_ghost(system.locally_owned, system.locally_relevant, communicator),
-      rhs(system.rhs), residual(system.rhs), force(system.rhs);
-    u = 0;
-    constraints.distribute(u);
-    u_ghost        = u;
-    const double f = std::max(system.rhs.l2_norm(), 1e-300);
-    check_right_hand_side(f);
+    template <int dim>
+    void
+    SlidingContext<dim>::newton_law(const PointValues &values,
+                                    Tensor<1, dim>    &t,
+                                    Tensor<2, dim>    &D)
+    {
+      return_mapping(values, t, D);
+      tangents[values.index] = D;
+      affine[values.index]   = t - D * values.jump;
+    }
 
-    // The residual norm at u (ghosted as u_ghost) with the return mapping
-    // from the committed slip, and the largest excess shear against the law
-    // of the last solve.
-    double     excess        = 0;
-    const auto residual_norm = [&](const TrilinosWrappers::MPI::Vector &owned) {
+    template <int dim>
+    double
+    SlidingContext<dim>::residual_norm(
+      const TrilinosWrappers::MPI::Vector &owned)
+    {
       u_ghost = owned;
       system.matrix.vmult(residual, owned);
       residual -= system.rhs;
-      force     = 0;
-      double ex = 0;
-      faults.assemble_interface(
-        dof_handler,
-        fe_space,
-        constraints,
-        &u_ghost,
-        [&](const unsigned int    i,
-            const InterfacePoint &p,
-            const Tensor<1, dim> &w,
-            Tensor<1, dim>       &t,
-            Tensor<2, dim>       &D) {
-          return_mapping(i, p, w, t, D);
-          ex =
-            std::max(ex, std::abs((t - tangents[i] * w - affine[i]) * p.shear));
-        },
-        nullptr,
-        nullptr,
-        &force);
+      force                                      = 0;
+      double                                  ex = 0;
+      typename FaultInterface<dim>::FaceTerms terms(fe_space);
+      faults.for_each_interface_point(
+        dof_handler, fe_space, &u_ghost, [&](const PointValues &values) {
+          const unsigned int i = values.index;
+          Tensor<1, dim>     t;
+          Tensor<2, dim>     D;
+          return_mapping(values, t, D);
+          ex = std::max(ex,
+                        std::abs((t - tangents[i] * values.jump - affine[i]) *
+                                 values.point.shear));
+          terms.add_traction(values, t);
+          if (!values.last_of_pair)
+            return;
+          constraints.distribute_local_to_global(terms.force,
+                                                 values.dofs,
+                                                 force);
+          terms.clear();
+        });
+      force.compress(VectorOperation::add);
       residual += force;
       constraints.set_zero(residual);
       excess = Utilities::MPI::max(ex, communicator);
       return residual.l2_norm();
-    };
+    }
 
-    TrilinosWrappers::SparseMatrix      matrix;
-    std::unique_ptr<Epetra_MultiVector> modes;
-    TrilinosWrappers::PreconditionAMG   amg;
-    // A fault's normal spring is far stiffer than the rock next to it
-    // (thesis: 1e15 N/m, i.e. k_n l / E h ~ 1e3): it ties the two fields'
-    // DoFs at each fault node into stiff pairs, which point smoothers
-    // (Chebyshev, Gauss-Seidel) damp poorly -- about 400 GMRES iterations
-    // per solve on the normal fault -- and ILU smoothing takes together:
-    // 45-55 per solve from 7 k to 416 k DoFs (doc/faults.md). ILU(0) of a
-    // sliding tangent can fail, though (the thrust fault): a solve that
-    // has not converged after 300 iterations goes on with the Chebyshev
-    // smoother. Neither is symmetric here: every solve is GMRES.
-    typename AMGSolver<dim>::Settings ilu_settings, chebyshev_settings;
-    ilu_settings.smoother = "ILU";
-    const auto set_up     = [&](const auto &law_at_point) {
+    template <int dim>
+    void
+    SlidingContext<dim>::set_up(const Law &law)
+    {
       matrix.copy_from(system.matrix);
       rhs = system.rhs;
-      faults.assemble_interface(dof_handler,
-                                fe_space,
-                                constraints,
-                                &u_ghost,
-                                law_at_point,
-                                &matrix,
-                                &rhs,
-                                nullptr);
-      if (parameters.direct_solver)
+      typename FaultInterface<dim>::FaceTerms terms(fe_space);
+      faults.for_each_interface_point(
+        dof_handler, fe_space, &u_ghost, [&](const PointValues &values) {
+          Tensor<1, dim> t;
+          Tensor<2, dim> D;
+          law(values, t, D);
+          terms.add_tangent(values, D);
+          terms.add_affine(values, t - D * values.jump);
+          if (!values.last_of_pair)
+            return;
+          constraints.distribute_local_to_global(
+            terms.matrix, terms.rhs, values.dofs, matrix, rhs);
+          terms.clear();
+        });
+      matrix.compress(VectorOperation::add);
+      rhs.compress(VectorOperation::add);
+      if (settings.direct_solver)
         return;
       if (!modes)
         modes = make_rigid_body_modes(dof_handler,
                                       fe_space,
                                       matrix.trilinos_matrix().DomainMap());
       initialize_elasticity_amg<dim>(amg, matrix, *modes, ilu_settings, true);
-    };
-    // GMRES with right preconditioning measures the true residual, which
-    // the tolerance refers to.
-    const auto linear_solve = [&](TrilinosWrappers::MPI::Vector &x) {
-      if (parameters.direct_solver)
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::assemble_rhs(const Law &law)
+    {
+      rhs = system.rhs;
+      typename FaultInterface<dim>::FaceTerms terms(fe_space);
+      faults.for_each_interface_point(
+        dof_handler, fe_space, nullptr, [&](const PointValues &values) {
+          Tensor<1, dim> t;
+          Tensor<2, dim> D;
+          law(values, t, D);
+          terms.add_tangent(values, D);
+          terms.add_affine(values, t - D * values.jump);
+          if (!values.last_of_pair)
+            return;
+          // The tangent only for the constraints' inhomogeneities.
+          constraints.distribute_local_to_global(terms.rhs,
+                                                 values.dofs,
+                                                 rhs,
+                                                 terms.matrix);
+          terms.clear();
+        });
+      rhs.compress(VectorOperation::add);
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::linear_solve(TrilinosWrappers::MPI::Vector &x)
+    {
+      if (settings.direct_solver)
         {
           SolverControl                  control(1, 0);
           TrilinosWrappers::SolverDirect direct(control);
@@ -291,7 +436,9 @@ namespace lithostress
           ++report.linear_solves;
           return;
         }
-      const double target = parameters.linear_tolerance * rhs.l2_norm();
+      // GMRES with right preconditioning measures the true residual, which
+      // the tolerance refers to.
+      const double target = settings.linear_tolerance * rhs.l2_norm();
       const auto   gmres  = [&](const unsigned int max_iterations) {
         SolverControl control(max_iterations, target, false, false);
         try
@@ -329,8 +476,12 @@ namespace lithostress
         }
       constraints.distribute(x);
       ++report.linear_solves;
-    };
-    const auto count_states = [&]() {
+    }
+
+    template <int dim>
+    std::string
+    SlidingContext<dim>::count_states() const
+    {
       unsigned int n[3] = {0, 0, 0};
       for (const auto &r : responses)
         ++n[static_cast<int>(r.state)];
@@ -339,178 +490,215 @@ namespace lithostress
           << Utilities::MPI::sum(n[2], communicator) << " open of "
           << Utilities::MPI::sum(n_points, communicator) << " points";
       return out.str();
-    };
+    }
 
-    double       r_norm    = 0;
-    bool         converged = false;
-    unsigned int iteration = 0;
-    if (newton)
-      {
-        // The elastic predictor, then Newton steps.
-        TrilinosWrappers::MPI::Vector x(u), step(u), trial(u);
-        r_norm = residual_norm(u);
-        for (iteration = 1; iteration <= parameters.max_iterations; ++iteration)
-          {
-            if (iteration == 1)
-              set_up(stuck_law(history.slip));
-            else
-              set_up(newton_law);
-            x = u;
-            linear_solve(x);
-            step = x;
-            step -= u;
-            double alpha = 1, trial_norm = 0;
-            for (unsigned int halving = 0;; ++halving)
-              {
-                trial = u;
-                trial.add(alpha, step);
-                trial_norm = residual_norm(trial);
-                if (!parameters.line_search || iteration == 1 ||
-                    trial_norm <= (1 - 1e-4 * alpha) * r_norm || halving == 6)
-                  break;
-                alpha /= 2;
-              }
-            u      = trial;
-            r_norm = trial_norm;
-            if (!std::isfinite(r_norm))
-              throw ComputationError(
-                "the Newton iteration for the sliding on " +
-                faults.frictional_names() +
-                " produced a residual that is not "
-                "finite in iteration " +
-                std::to_string(iteration));
-            std::ostringstream line;
-            line << "  sliding: Newton iteration " << iteration << ": residual "
-                 << std::setprecision(3) << r_norm / f << ", excess shear "
-                 << excess << " Pa, " << count_states()
-                 << (alpha < 1 ? ", step " + std::to_string(alpha) : "");
-            progress(line.str());
-            if (r_norm <= parameters.residual_tolerance * f &&
-                excess <= parameters.excess_shear_tolerance)
-              {
-                converged = true;
+    /**
+     * The semi-smooth Newton method (FrictionalSlidingSolver's `newton`,
+     * replacing thesis §5.5's iteration): the elastic predictor, then
+     * Newton steps with the return mapping's consistent tangent and a
+     * backtracking line search on the residual norm. Returns whether the
+     * residual and the excess shear fell below their tolerances; @p c
+     * holds the last iterate.
+     */
+    template <int dim>
+    bool
+    solve_by_newton(SlidingContext<dim> &c)
+    {
+      using PointValues = typename SlidingContext<dim>::PointValues;
+      const auto                   &settings = c.settings;
+      TrilinosWrappers::MPI::Vector x(c.u), step(c.u), trial(c.u);
+      c.r_norm = c.residual_norm(c.u);
+      for (c.iteration = 1; c.iteration <= settings.max_iterations;
+           ++c.iteration)
+        {
+          if (c.iteration == 1)
+            c.set_up(c.stuck_law(c.history.slip));
+          else
+            c.set_up([&c](const PointValues &values,
+                          Tensor<1, dim>    &t,
+                          Tensor<2, dim> &D) { c.newton_law(values, t, D); });
+          x = c.u;
+          c.linear_solve(x);
+          step = x;
+          step -= c.u;
+          double alpha = 1, trial_norm = 0;
+          for (unsigned int halving = 0;; ++halving)
+            {
+              trial = c.u;
+              trial.add(alpha, step);
+              trial_norm = c.residual_norm(trial);
+              if (!settings.line_search || c.iteration == 1 ||
+                  trial_norm <= (1 - 1e-4 * alpha) * c.r_norm || halving == 6)
                 break;
-              }
-          }
-      }
-    else
-      {
-        // The fault stays elastic in the matrix; its excess shear moves
-        // into the slip.
-        set_up(stuck_law(thesis_slip));
-        double first_excess = 0;
-        for (iteration = 1; iteration <= parameters.max_iterations; ++iteration)
-          {
-            if (iteration > 1)
-              {
-                rhs = system.rhs;
-                faults.assemble_interface(dof_handler,
-                                          fe_space,
-                                          constraints,
-                                          nullptr,
-                                          stuck_law(thesis_slip),
-                                          nullptr,
-                                          &rhs,
-                                          nullptr);
-              }
-            linear_solve(u);
-            u_ghost   = u;
-            double ex = 0;
-            faults.assemble_interface(
-              dof_handler,
-              fe_space,
-              constraints,
-              &u_ghost,
-              [&](const unsigned int    i,
-                  const InterfacePoint &p,
-                  const Tensor<1, dim> &w,
-                  Tensor<1, dim> &,
-                  Tensor<2, dim> &) {
-                // The excess over the limit at the elastic traction.
-                const CoulombFriction     &law = faults.friction(p.fault);
-                CoulombFriction::Response &r   = responses[i];
-                r                              = law.respond(w * p.shear,
-                                w * p.normal,
-                                thesis_slip[i],
-                                p.depth);
-                const double tau =
-                  law.shear_stiffness * (w * p.shear - thesis_slip[i]);
-                double e = 0;
-                if (r.state == SlipState::open)
-                  e = tau;
-                else if (r.state == SlipState::sliding)
-                  e = tau - (tau > 0 ? 1 : -1) * r.friction_limit;
-                ex = std::max(ex, std::abs(e));
-                if (e != 0)
-                  slid[i] = true;
-                thesis_slip[i] +=
-                  parameters.convergence_factor * e / law.shear_stiffness;
-                r.state = r.state == SlipState::open ? SlipState::open
-                          : slid[i]                  ? SlipState::sliding
-                                                     : SlipState::stuck;
-              },
-              nullptr,
-              nullptr,
-              nullptr);
-            excess = Utilities::MPI::max(ex, communicator);
-            if (iteration == 1)
-              first_excess = excess;
-            // Growing by orders of magnitude, or overflowing: the factor is
-            // too large for this stiffness (thesis §6.1.5).
-            if (!std::isfinite(excess) || excess > 1e3 * first_excess)
-              {
-                std::ostringstream what;
-                what << std::setprecision(3)
-                     << "the thesis iteration for the sliding on "
-                     << faults.frictional_names()
-                     << " diverges: the excess shear "
-                     << "grew from " << first_excess << " Pa to " << excess
-                     << " Pa in " << iteration
-                     << " iterations; lower Faults/Sliding solver/Convergence "
-                        "factor (now "
-                     << parameters.convergence_factor << ")";
-                report.nonlinear_iterations = iteration;
-                throw ComputationError(what.str());
-              }
-            std::ostringstream line;
-            line << "  sliding: thesis iteration " << iteration
-                 << ": excess shear " << std::setprecision(3) << excess
-                 << " Pa, " << count_states();
-            if (iteration == 1 || iteration % 50 == 0 ||
-                excess <= parameters.excess_shear_tolerance)
-              progress(line.str());
-            if (excess <= parameters.excess_shear_tolerance)
-              {
-                converged = true;
-                break;
-              }
-          }
-        // The residual with the states of the thesis's last iterate.
-        const std::vector<CoulombFriction::Response> thesis = responses;
-        r_norm                                              = residual_norm(u);
-        responses                                           = thesis;
-      }
+              alpha /= 2;
+            }
+          c.u      = trial;
+          c.r_norm = trial_norm;
+          if (!std::isfinite(c.r_norm))
+            throw ComputationError(
+              "the Newton iteration for the sliding on " +
+              c.faults.frictional_names() +
+              " produced a residual that is not finite in iteration " +
+              std::to_string(c.iteration));
+          std::ostringstream line;
+          line << "  sliding: Newton iteration " << c.iteration << ": residual "
+               << std::setprecision(3) << c.r_norm / c.f << ", excess shear "
+               << c.excess << " Pa, " << c.count_states()
+               << (alpha < 1 ? ", step " + std::to_string(alpha) : "");
+          c.progress(line.str());
+          if (c.r_norm <= settings.residual_tolerance * c.f &&
+              c.excess <= settings.excess_shear_tolerance)
+            return true;
+        }
+      return false;
+    }
+
+    /**
+     * The largest excess shear over the friction limit at the elastic
+     * traction of c.u (thesis §5.5, FSHEAR), moved into @p slip times the
+     * convergence factor; @p slid marks the points that ever slid.
+     * c.responses get the states.
+     */
+    template <int dim>
+    double
+    thesis_excess_shear(SlidingContext<dim> &c,
+                        std::vector<double> &slip,
+                        std::vector<bool>   &slid)
+    {
+      using PointValues = typename SlidingContext<dim>::PointValues;
+      c.u_ghost         = c.u;
+      double ex         = 0;
+      c.faults.for_each_interface_point(
+        c.dof_handler, c.fe_space, &c.u_ghost, [&](const PointValues &values) {
+          const auto           &p = values.point;
+          const Tensor<1, dim> &w = values.jump;
+          const unsigned int    i = values.index;
+          // The excess over the limit at the elastic traction.
+          const CoulombFriction     &law = c.faults.friction(p.fault);
+          CoulombFriction::Response &r   = c.responses[i];
+          r = law.respond(w * p.shear, w * p.normal, slip[i], p.depth);
+          const double tau = law.shear_stiffness * (w * p.shear - slip[i]);
+          double       e   = 0;
+          if (r.state == SlipState::open)
+            e = tau;
+          else if (r.state == SlipState::sliding)
+            e = tau - (tau > 0 ? 1 : -1) * r.friction_limit;
+          ex = std::max(ex, std::abs(e));
+          if (e != 0)
+            slid[i] = true;
+          slip[i] += c.settings.convergence_factor * e / law.shear_stiffness;
+          r.state = r.state == SlipState::open ? SlipState::open
+                    : slid[i]                  ? SlipState::sliding
+                                               : SlipState::stuck;
+        });
+      return Utilities::MPI::max(ex, c.communicator);
+    }
+
+    /**
+     * The thesis's iteration (thesis §5.5, FSHEAR; FrictionalSlidingSolver's
+     * `thesis`): the fault stays elastic in the matrix (set up once), its
+     * excess shear moves into the slip, re-solved until the excess shear
+     * is below its tolerance. Returns whether it was; throws
+     * ComputationError if the excess shear grows by orders of magnitude
+     * (thesis §6.1.5). @p c holds the last iterate, with the residual of
+     * the thesis's last states.
+     */
+    template <int dim>
+    bool
+    solve_by_thesis_iteration(SlidingContext<dim> &c)
+    {
+      const auto         &settings = c.settings;
+      std::vector<double> slip     = c.history.slip;
+      std::vector<bool>   slid(c.n_points, false);
+      bool                converged = false;
+      c.set_up(c.stuck_law(slip));
+      double first_excess = 0;
+      for (c.iteration = 1; c.iteration <= settings.max_iterations;
+           ++c.iteration)
+        {
+          if (c.iteration > 1)
+            c.assemble_rhs(c.stuck_law(slip));
+          c.linear_solve(c.u);
+          c.excess = thesis_excess_shear(c, slip, slid);
+          if (c.iteration == 1)
+            first_excess = c.excess;
+          // Growing by orders of magnitude, or overflowing: the factor is
+          // too large for this stiffness (thesis §6.1.5).
+          if (!std::isfinite(c.excess) || c.excess > 1e3 * first_excess)
+            {
+              std::ostringstream what;
+              what << std::setprecision(3)
+                   << "the thesis iteration for the sliding on "
+                   << c.faults.frictional_names()
+                   << " diverges: the excess shear grew from " << first_excess
+                   << " Pa to " << c.excess << " Pa in " << c.iteration
+                   << " iterations; lower Faults/Sliding solver/Convergence "
+                      "factor (now "
+                   << settings.convergence_factor << ")";
+              c.report.nonlinear_iterations = c.iteration;
+              throw ComputationError(what.str());
+            }
+          std::ostringstream line;
+          line << "  sliding: thesis iteration " << c.iteration
+               << ": excess shear " << std::setprecision(3) << c.excess
+               << " Pa, " << c.count_states();
+          if (c.iteration == 1 || c.iteration % 50 == 0 ||
+              c.excess <= settings.excess_shear_tolerance)
+            c.progress(line.str());
+          if (c.excess <= settings.excess_shear_tolerance)
+            {
+              converged = true;
+              break;
+            }
+        }
+      // The residual with the states of the thesis's last iterate.
+      const std::vector<CoulombFriction::Response> thesis = c.responses;
+      c.r_norm    = c.residual_norm(c.u);
+      c.responses = thesis;
+      return converged;
+    }
+  } // namespace
+
+  template <int dim>
+  void
+  FrictionalSlidingSolver<dim>::solve(
+    const DiscreteProblem<dim>             &problem,
+    const FaultInterface<dim>              &faults,
+    FaultSlipHistory                       &history,
+    TrilinosWrappers::MPI::Vector          &solution,
+    SolverReport                           &report,
+    const std::function<void(std::string)> &progress) const
+  {
+    const bool newton    = parameters.method == Method::newton;
+    report               = SolverReport();
+    report.solver        = newton ? "newton" : "thesis";
+    report.linear_solves = 0;
+    Timer               timer(problem.dof_handler.get_communicator(), true);
+    SlidingContext<dim> c(
+      parameters, problem, faults, history, report, progress);
+    const bool converged =
+      newton ? solve_by_newton(c) : solve_by_thesis_iteration(c);
     // The last iterate's slip and states: the trial history, committed by
     // the caller (or, if not converged, shown).
-    for (unsigned int i = 0; i < n_points; ++i)
+    for (unsigned int i = 0; i < c.n_points; ++i)
       {
-        history.trial_slip[i]   = responses[i].plastic_slip;
-        history.trial_states[i] = responses[i].state;
+        history.trial_slip[i]   = c.responses[i].plastic_slip;
+        history.trial_states[i] = c.responses[i].state;
       }
     report.nonlinear_iterations =
-      std::min(iteration, parameters.max_iterations);
-    report.final_residual = r_norm / f;
+      std::min(c.iteration, parameters.max_iterations);
+    report.final_residual = c.r_norm / c.f;
     report.solve_time     = timer.wall_time();
-    solution              = u;
+    solution              = c.u;
     if (!converged)
       {
         std::ostringstream what;
         what << std::setprecision(3) << "the frictional sliding on "
              << faults.frictional_names() << " did not converge in "
              << parameters.max_iterations << " " << report.solver
-             << " iterations (residual " << r_norm / f
+             << " iterations (residual " << c.r_norm / c.f
              << " of the load, excess "
-             << "shear " << excess
+             << "shear " << c.excess
              << " Pa); the last iterate is written out. Raise Faults/Sliding "
                 "solver/Maximum iterations"
              << (newton ? "" : " or the Convergence factor");

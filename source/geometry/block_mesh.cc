@@ -2,6 +2,7 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <lithostress/geometry/block_mesh.h>
+#include <lithostress/geometry/mesh_check.h>
 
 #include <cmath>
 
@@ -134,8 +135,11 @@ namespace lithostress
   }
 
   void
-  BlockMesh::create(Triangulation<2> &triangulation,
-                    const double      tolerance) const
+  BlockMesh::create(Triangulation<2>  &triangulation,
+                    const double       tolerance,
+                    const std::string &entry,
+                    const double       length_scale,
+                    const std::string &length_unit) const
   {
     std::vector<Point<2>>    points = vertices;
     std::vector<CellData<2>> cell_data;
@@ -154,6 +158,15 @@ namespace lithostress
     // Blocks meet with different local orientations; deal.II needs every
     // line seen in the same direction by both its cells (as GridIn does).
     GridTools::consistently_order_cells(cell_data);
+    // deal.II would take a flat cell, or turn an inverted one round, without
+    // a word: name the cell and the entry instead.
+    std::vector<Quadrilateral> corners;
+    for (const CellData<2> &cell : cell_data)
+      corners.push_back({{points[cell.vertices[0]],
+                          points[cell.vertices[1]],
+                          points[cell.vertices[3]],
+                          points[cell.vertices[2]]}});
+    check_quadrilaterals(corners, {}, entry, length_scale, length_unit);
     triangulation.create_triangulation(points, cell_data, none);
   }
 } // namespace lithostress

@@ -13,6 +13,170 @@
 
 namespace lithostress
 {
+  namespace
+  {
+    /** A 2-D element of a Gmsh file (type 2, a triangle, or 3, a
+     * quadrilateral): its number and its nodes. */
+    struct MshElement
+    {
+      long              number = 0;
+      int               type   = 0;
+      std::vector<long> nodes;
+    };
+
+    /** The next line of @p in that is not blank, trimmed; false at the end
+     * of the file. */
+    bool
+    next_line(std::istream &in, std::string &line)
+    {
+      while (std::getline(in, line))
+        {
+          line = Utilities::trim(line);
+          if (!line.empty())
+            return true;
+        }
+      return false;
+    }
+
+    /** The numbers on @p line. */
+    template <typename Number>
+    std::vector<Number>
+    numbers_on(const std::string &line)
+    {
+      std::istringstream  text(line);
+      std::vector<Number> numbers;
+      Number              x;
+      while (text >> x)
+        numbers.push_back(x);
+      return numbers;
+    }
+
+    /** The next line's first number if the line has at least @p n
+     * numbers, else -1. */
+    long
+    count_on_next_line(std::istream &in, const unsigned int n = 1)
+    {
+      std::string line;
+      if (!next_line(in, line))
+        return -1;
+      const auto numbers = numbers_on<long>(line);
+      return numbers.size() >= n ? numbers[0] : -1;
+    }
+
+    /** The nodes of a `$Nodes` section of MSH 2 (`id x y z` lines); false
+     * if it is cut short. */
+    bool
+    read_msh2_nodes(std::istream &in, std::map<long, Point<2>> &nodes)
+    {
+      const long  n = count_on_next_line(in);
+      std::string line;
+      for (long i = 0; i < n; ++i)
+        {
+          if (!next_line(in, line))
+            return false;
+          const auto x = numbers_on<double>(line);
+          if (x.size() < 3)
+            return false;
+          nodes[static_cast<long>(x[0])] = Point<2>(x[1], x[2]);
+        }
+      return n >= 0;
+    }
+
+    /** The nodes of a `$Nodes` section of MSH 4.1 (entity blocks of node
+     * tags, then their coordinates); false if it is cut short. */
+    bool
+    read_msh41_nodes(std::istream &in, std::map<long, Point<2>> &nodes)
+    {
+      const long  n_blocks = count_on_next_line(in, 4);
+      std::string line;
+      for (long b = 0; b < n_blocks; ++b)
+        {
+          if (!next_line(in, line))
+            return false;
+          const auto header = numbers_on<long>(line);
+          if (header.size() < 4)
+            return false;
+          std::vector<long> tags;
+          for (long i = 0; i < header[3]; ++i)
+            {
+              if (!next_line(in, line) || numbers_on<long>(line).empty())
+                return false;
+              tags.push_back(numbers_on<long>(line)[0]);
+            }
+          for (const long tag : tags)
+            {
+              if (!next_line(in, line))
+                return false;
+              const auto x = numbers_on<double>(line);
+              if (x.size() < 2)
+                return false;
+              nodes[tag] = Point<2>(x[0], x[1]);
+            }
+        }
+      return n_blocks >= 0;
+    }
+
+    /** The 2-D elements of an `$Elements` section of MSH 2 (`id type
+     * n_tags tags... nodes...` lines); false if it is cut short. */
+    bool
+    read_msh2_elements(std::istream &in, std::vector<MshElement> &elements)
+    {
+      const long  n = count_on_next_line(in);
+      std::string line;
+      for (long i = 0; i < n; ++i)
+        {
+          if (!next_line(in, line))
+            return false;
+          const auto v = numbers_on<long>(line);
+          if (v.size() < 3 ||
+              v.size() < 3 + static_cast<std::size_t>(std::max(0L, v[2])))
+            return false;
+          if (v[1] != 2 && v[1] != 3)
+            continue;
+          MshElement element;
+          element.number = v[0];
+          element.type   = v[1];
+          element.nodes.assign(v.begin() + 3 + v[2], v.end());
+          elements.push_back(element);
+        }
+      return n >= 0;
+    }
+
+    /** The 2-D elements of an `$Elements` section of MSH 4.1 (entity
+     * blocks of one element type, `tag nodes...` lines); false if it is
+     * cut short. */
+    bool
+    read_msh41_elements(std::istream &in, std::vector<MshElement> &elements)
+    {
+      const long  n_blocks = count_on_next_line(in, 4);
+      std::string line;
+      for (long b = 0; b < n_blocks; ++b)
+        {
+          if (!next_line(in, line))
+            return false;
+          const auto header = numbers_on<long>(line);
+          if (header.size() < 4)
+            return false;
+          for (long i = 0; i < header[3]; ++i)
+            {
+              if (!next_line(in, line))
+                return false;
+              const auto v = numbers_on<long>(line);
+              if (v.empty())
+                return false;
+              if (header[2] != 2 && header[2] != 3)
+                continue;
+              MshElement element;
+              element.number = v[0];
+              element.type   = header[2];
+              element.nodes.assign(v.begin() + 1, v.end());
+              elements.push_back(element);
+            }
+        }
+      return n_blocks >= 0;
+    }
+  } // namespace
+
   template <int dim>
   void
   GmshMesh<dim>::declare_parameters(ParameterHandler &prm)
@@ -56,7 +220,8 @@ namespace lithostress
   void
   GmshMesh<dim>::parse_parameters(ParameterHandler &prm, const double s)
   {
-    scale = s;
+    scale       = s;
+    length_unit = prm.get("Length unit");
     prm.enter_subsection("Gmsh");
     mesh_file                           = prm.get("Mesh file");
     const std::string              text = prm.get("Circular arcs");
@@ -139,6 +304,7 @@ namespace lithostress
         if (concentric_radii.empty())
           throw_input_error(entry, "gives no radius");
       }
+    read_file_cells();
   }
 
   template <int dim>
@@ -347,46 +513,118 @@ namespace lithostress
 
   template <int dim>
   void
-  GmshMesh<dim>::create_coarse_mesh(
+  GmshMesh<dim>::read_file_cells()
+  {
+    file_cells.clear();
+    std::ifstream            in(mesh_file);
+    std::string              line;
+    double                   version = 0;
+    std::map<long, Point<2>> nodes;
+    std::vector<MshElement>  elements;
+    bool                     complete = true;
+    while (complete && std::getline(in, line))
+      {
+        line = Utilities::trim(line);
+        if (line == "$MeshFormat" && std::getline(in, line))
+          std::istringstream(line) >> version;
+        else if (line == "$Nodes")
+          complete = (version >= 2 && version < 3) ? read_msh2_nodes(in, nodes)
+                     : version == 4.1              ? read_msh41_nodes(in, nodes)
+                                                   : false;
+        else if (line == "$Elements")
+          complete = (version >= 2 && version < 3)
+                       ? read_msh2_elements(in, elements)
+                     : version == 4.1 ? read_msh41_elements(in, elements)
+                                      : false;
+      }
+    if (!complete)
+      return;
+    for (const MshElement &element : elements)
+      {
+        FileCell cell;
+        cell.number    = element.number;
+        cell.checkable = element.type == 3 && element.nodes.size() == 4;
+        for (unsigned int v = 0; v < element.nodes.size() && cell.checkable;
+             ++v)
+          {
+            const auto node = nodes.find(element.nodes[v]);
+            cell.checkable  = node != nodes.end();
+            cell.nodes[v]   = element.nodes[v];
+            if (cell.checkable)
+              cell.corners[v] =
+                Point<2>(node->second[0] * scale, node->second[1] * scale);
+          }
+        file_cells.push_back(cell);
+      }
+  }
+
+  template <int dim>
+  void
+  GmshMesh<dim>::check_sections() const
+  {
+    std::ifstream            text(mesh_file);
+    std::string              line;
+    std::vector<std::string> open_sections;
+    unsigned int             number = 0;
+    while (std::getline(text, line))
+      {
+        ++number;
+        line = Utilities::trim(line);
+        if (line.size() < 2 || line[0] != '$')
+          continue;
+        if (line.compare(0, 4, "$End") == 0)
+          {
+            if (open_sections.empty() || open_sections.back() != line.substr(4))
+              throw_input_error("Geometry/Gmsh/Mesh file",
+                                "<" + mesh_file + ">: line " +
+                                  std::to_string(number) + " (" + line +
+                                  ") closes a section that is not open");
+            open_sections.pop_back();
+          }
+        else
+          open_sections.push_back(line.substr(1));
+      }
+    if (!open_sections.empty())
+      throw_input_error("Geometry/Gmsh/Mesh file",
+                        "<" + mesh_file + "> is truncated: its $" +
+                          open_sections.back() + " section has no $End" +
+                          open_sections.back() + " (the file ends at line " +
+                          std::to_string(number) + ")");
+  }
+
+  template <int dim>
+  void
+  GmshMesh<dim>::check_element_shapes() const
+  {
+    std::vector<Quadrilateral>       cells;
+    std::vector<std::array<long, 4>> nodes;
+    std::vector<unsigned int>        index;
+    for (unsigned int i = 0; i < file_cells.size(); ++i)
+      if (file_cells[i].checkable)
+        {
+          cells.push_back(file_cells[i].corners);
+          nodes.push_back(file_cells[i].nodes);
+          index.push_back(i);
+        }
+    check_quadrilaterals(cells,
+                         nodes,
+                         mesh_entry(),
+                         scale,
+                         length_unit,
+                         [&](const unsigned int i) {
+                           return cell_name(index[i]);
+                         });
+  }
+
+  template <int dim>
+  void
+  GmshMesh<dim>::read_triangulation(
     parallel::distributed::Triangulation<dim> &tria) const
   {
     // Same mesh smoothing: copy_triangulation() takes it from the copy.
     Triangulation<dim> serial(tria.get_mesh_smoothing());
     GridIn<dim>        grid_in;
     grid_in.attach_triangulation(serial);
-    // Every $Section must end: a file cut off (a copy or a mesher that
-    // stopped half-way) is named as such, not by what the reader trips on.
-    {
-      std::ifstream            text(mesh_file);
-      std::string              line;
-      std::vector<std::string> open_sections;
-      unsigned int             number = 0;
-      while (std::getline(text, line))
-        {
-          ++number;
-          line = Utilities::trim(line);
-          if (line.size() < 2 || line[0] != '$')
-            continue;
-          if (line.compare(0, 4, "$End") == 0)
-            {
-              if (open_sections.empty() ||
-                  open_sections.back() != line.substr(4))
-                throw_input_error("Geometry/Gmsh/Mesh file",
-                                  "<" + mesh_file + ">: line " +
-                                    std::to_string(number) + " (" + line +
-                                    ") closes a section that is not open");
-              open_sections.pop_back();
-            }
-          else
-            open_sections.push_back(line.substr(1));
-        }
-      if (!open_sections.empty())
-        throw_input_error("Geometry/Gmsh/Mesh file",
-                          "<" + mesh_file + "> is truncated: its $" +
-                            open_sections.back() + " section has no $End" +
-                            open_sections.back() + " (the file ends at line " +
-                            std::to_string(number) + ")");
-    }
     std::ifstream      file(mesh_file);
     std::istringstream filtered(faults.empty() ? std::string()
                                                : text_without_fault_lines());
@@ -410,10 +648,13 @@ namespace lithostress
     if (scale != 1.0)
       GridTools::scale(scale, serial);
     tria.copy_triangulation(serial);
+  }
 
-    // Manifolds: an arc gets id 2k+1 (polar), its neighbour cells 2k+2
-    // (transfinite interpolation).
-    std::vector<TransfiniteInterpolationManifold<dim>> transfinite(arcs.size());
+  template <int dim>
+  void
+  GmshMesh<dim>::attach_boundary_arcs(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
     for (unsigned int k = 0; k < arcs.size(); ++k)
       {
         const types::boundary_id b       = boundary_names.at(arcs[k].first);
@@ -431,8 +672,13 @@ namespace lithostress
               }
         tria.set_manifold(arc_id, PolarManifold<dim>(arcs[k].second));
       }
-    // A curved fault's faces get a polar manifold, id 2(n + j) + 1 for
-    // fault j after n boundary arcs, their cells 2(n + j) + 2.
+  }
+
+  template <int dim>
+  void
+  GmshMesh<dim>::attach_fault_arcs(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
     for (unsigned int j = 0; j < faults.size(); ++j)
       {
         const FaultTrace &fault = faults[j];
@@ -460,60 +706,106 @@ namespace lithostress
         centre[1] = fault.arc_centre[1];
         tria.set_manifold(arc_id, PolarManifold<dim>(centre));
       }
-    // Lines on the concentric circles, inside or on the boundary: one
-    // polar manifold after the arcs' and faults', their cells one
-    // transfinite interpolation.
+  }
+
+  template <int dim>
+  void
+  GmshMesh<dim>::attach_concentric_arcs(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    if (concentric_radii.empty())
+      return;
     const types::manifold_id concentric_id =
       2 * (arcs.size() + faults.size()) + 1;
-    if (!concentric_radii.empty())
-      {
-        const auto on_a_circle = [&](const auto &face) {
-          const double r0 = face->vertex(0).distance(concentric_centre),
-                       r1 = face->vertex(1).distance(concentric_centre);
-          for (const double r : concentric_radii)
-            if (std::abs(r0 - r) < 1e-9 * r && std::abs(r1 - r) < 1e-9 * r)
-              return true;
-          return false;
-        };
-        unsigned int n_lines = 0;
-        for (const auto &cell : tria.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            if (on_a_circle(face))
-              {
-                // Its cell's other lines, flat or on another transfinite
-                // interpolation (even ids), follow this one's.
-                cell->set_manifold_id(concentric_id + 1);
-                for (const auto &f : cell->face_iterators())
-                  if (f->manifold_id() == numbers::flat_manifold_id ||
-                      f->manifold_id() % 2 == 0)
-                    f->set_manifold_id(concentric_id + 1);
-                face->set_manifold_id(concentric_id);
-                ++n_lines;
-              }
-        if (n_lines == 0)
-          throw_input_error("Geometry/Gmsh/Concentric arcs",
-                            "no line of the mesh lies on these circles");
-        tria.set_manifold(concentric_id, PolarManifold<dim>(concentric_centre));
-      }
+    const auto on_a_circle = [&](const auto &face) {
+      const double r0 = face->vertex(0).distance(concentric_centre),
+                   r1 = face->vertex(1).distance(concentric_centre);
+      for (const double r : concentric_radii)
+        if (std::abs(r0 - r) < 1e-9 * r && std::abs(r1 - r) < 1e-9 * r)
+          return true;
+      return false;
+    };
+    unsigned int n_lines = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (on_a_circle(face))
+          {
+            // Its cell's other lines, flat or on another transfinite
+            // interpolation (even ids), follow this one's.
+            cell->set_manifold_id(concentric_id + 1);
+            for (const auto &f : cell->face_iterators())
+              if (f->manifold_id() == numbers::flat_manifold_id ||
+                  f->manifold_id() % 2 == 0)
+                f->set_manifold_id(concentric_id + 1);
+            face->set_manifold_id(concentric_id);
+            ++n_lines;
+          }
+    if (n_lines == 0)
+      throw_input_error("Geometry/Gmsh/Concentric arcs",
+                        "no line of the mesh lies on these circles");
+    tria.set_manifold(concentric_id, PolarManifold<dim>(concentric_centre));
+  }
+
+  template <int dim>
+  void
+  GmshMesh<dim>::attach_transfinite_interpolation(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
     for (unsigned int k = 0; k < arcs.size(); ++k)
       {
-        transfinite[k].initialize(tria);
-        tria.set_manifold(2 * k + 2, transfinite[k]);
+        TransfiniteInterpolationManifold<dim> transfinite;
+        transfinite.initialize(tria);
+        tria.set_manifold(2 * k + 2, transfinite);
       }
-    std::vector<TransfiniteInterpolationManifold<dim>> fault_transfinite(
-      faults.size());
     for (unsigned int j = 0; j < faults.size(); ++j)
       if (faults[j].has_arc)
         {
-          fault_transfinite[j].initialize(tria);
-          tria.set_manifold(2 * (arcs.size() + j) + 2, fault_transfinite[j]);
+          TransfiniteInterpolationManifold<dim> transfinite;
+          transfinite.initialize(tria);
+          tria.set_manifold(2 * (arcs.size() + j) + 2, transfinite);
         }
     if (!concentric_radii.empty())
       {
-        TransfiniteInterpolationManifold<dim> concentric_transfinite;
-        concentric_transfinite.initialize(tria);
-        tria.set_manifold(concentric_id + 1, concentric_transfinite);
+        TransfiniteInterpolationManifold<dim> transfinite;
+        transfinite.initialize(tria);
+        tria.set_manifold(2 * (arcs.size() + faults.size()) + 2, transfinite);
       }
+  }
+
+  template <int dim>
+  void
+  GmshMesh<dim>::create_coarse_mesh(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    // Every $Section must end: a file cut off (a copy or a mesher that
+    // stopped half-way) is named as such, not by what the reader trips on.
+    check_sections();
+    check_element_shapes();
+    read_triangulation(tria);
+    // Manifolds: boundary arcs, curved faults, concentric circles, in
+    // this order of ids; the transfinite interpolations of their cells
+    // once every id is set.
+    attach_boundary_arcs(tria);
+    attach_fault_arcs(tria);
+    attach_concentric_arcs(tria);
+    attach_transfinite_interpolation(tria);
+  }
+
+  template <int dim>
+  std::string
+  GmshMesh<dim>::mesh_entry() const
+  {
+    return "Geometry/Gmsh/Mesh file";
+  }
+
+  template <int dim>
+  std::string
+  GmshMesh<dim>::cell_name(const unsigned int index) const
+  {
+    if (index < file_cells.size())
+      return "<" + mesh_file + ">: element " +
+             std::to_string(file_cells[index].number);
+    return GeometryModel<dim>::cell_name(index);
   }
 
   template <int dim>

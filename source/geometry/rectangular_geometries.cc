@@ -323,103 +323,7 @@ namespace lithostress
     const auto counts =
       Utilities::string_to_int(split_list(prm.get("Cells per layer")));
     cells_across = positive_count(prm, "Cells across", where);
-    const std::vector<std::string> surface_xs =
-      split_list(prm.get("Fault surface x"));
-    const unsigned int n_faults = surface_xs.size();
-    faults.assign(n_faults, FaultTrace());
-    surface_x_given.assign(n_faults, 0);
-    // One value for all faults or one per fault.
-    const auto per_fault = [&](const std::string &entry, const char separator) {
-      std::vector<std::string> items = split_list(prm.get(entry), separator);
-      if (items.empty())
-        items.emplace_back();
-      if (items.size() == 1)
-        items.resize(n_faults, items.front());
-      if (items.size() != n_faults)
-        throw_input_error(where + entry,
-                          "needs one value, or one per fault (" +
-                            std::to_string(n_faults) + ")");
-      return items;
-    };
-    if (n_faults > 0)
-      {
-        const auto        names   = per_fault("Fault names", ',');
-        const auto        dips    = per_fault("Fault dip", ',');
-        const auto        towards = per_fault("Fault dips towards", ',');
-        const std::string centre_entry =
-          Utilities::trim(prm.get("Fault arc centre"));
-        // One `x, y` per fault, an empty one for a planar fault.
-        std::vector<std::string> centres;
-        {
-          std::istringstream stream(centre_entry);
-          std::string        item;
-          while (std::getline(stream, item, ';'))
-            centres.push_back(Utilities::trim(item));
-          if (centre_entry.empty() || centre_entry.back() == ';')
-            centres.emplace_back();
-          if (centres.size() == 1)
-            centres.resize(n_faults, centres.front());
-          if (centres.size() != n_faults)
-            throw_input_error(where + "Fault arc centre",
-                              "needs one `x, y` (or nothing) per fault (" +
-                                std::to_string(n_faults) +
-                                "), separated by `;`");
-        }
-        const auto radii  = per_fault("Fault arc radius", ',');
-        const auto depths = per_fault("Fault arc from depth", ',');
-        for (unsigned int k = 0; k < n_faults; ++k)
-          {
-            FaultTrace &fault = faults[k];
-            fault.name        = Utilities::trim(names[k]);
-            for (unsigned int j = 0; j < k; ++j)
-              if (faults[j].name == fault.name)
-                throw_input_error(where + "Fault names",
-                                  "the name <" + fault.name +
-                                    "> is given twice");
-            const double dip_degrees =
-              parse_number(dips[k], where + "Fault dip");
-            if (!(dip_degrees > 0 && dip_degrees <= 90))
-              throw_input_error(where + "Fault dip",
-                                "must lie in (0, 90] degrees, got " + dips[k]);
-            fault.dip              = dip_degrees * numbers::PI / 180;
-            const std::string side = Utilities::trim(towards[k]);
-            if (side != "right" && side != "left")
-              throw_input_error(where + "Fault dips towards",
-                                "<" + side + "> is neither right nor left");
-            fault.direction          = side == "right" ? 1 : -1;
-            const std::string centre = Utilities::trim(centres[k]);
-            fault.has_arc            = !centre.empty();
-            if (fault.has_arc)
-              {
-                const auto c = split_list(centre);
-                if (c.size() != 2)
-                  throw_input_error(where + "Fault arc centre",
-                                    "<" + centre + "> is not `x, y`");
-                fault.arc_centre =
-                  Point<2>(parse_number(c[0], where + "Fault arc centre"),
-                           parse_number(c[1], where + "Fault arc centre")) *
-                  scale;
-                fault.arc_radius =
-                  parse_number(radii[k], where + "Fault arc radius") * scale;
-                fault.arc_from_depth =
-                  parse_number(depths[k], where + "Fault arc from depth") *
-                  scale;
-                if (!(fault.arc_radius > 0))
-                  throw_input_error(where + "Fault arc radius",
-                                    "must be positive for an arc");
-                if (!(fault.arc_from_depth >= 0))
-                  throw_input_error(where + "Fault arc from depth",
-                                    "must not be negative");
-              }
-            const std::string x = Utilities::trim(surface_xs[k]);
-            if (x == "auto" && !fault.has_arc)
-              throw_input_error(where + "Fault surface x",
-                                "`auto` needs a Fault arc centre");
-            surface_x_given[k] =
-              x == "auto" ? std::nan("")
-                          : parse_number(x, where + "Fault surface x") * scale;
-          }
-      }
+    parse_fault_geometry(prm, scale);
     prm.leave_subsection();
 
     const unsigned int n_layers = interfaces.size() - 1;
@@ -437,76 +341,208 @@ namespace lithostress
                           std::to_string(n_layers) + ")");
     cells_per_layer.assign(counts.begin(), counts.end());
     for (unsigned int k = 0; k < faults.size(); ++k)
-      {
-        FaultTrace &fault = faults[k];
-        fault.top_y       = interfaces.front();
-        fault.surface_x   = surface_x_given[k];
-        if (fault.has_arc)
-          {
-            const std::string arc   = where + "Fault arc centre";
-            const double      y_top = interfaces.front() - fault.arc_from_depth;
-            const double      y_bot = interfaces.back();
-            if (!(y_top > y_bot))
-              throw_input_error(where + "Fault arc from depth",
-                                "must lie above the base");
-            // A graph x(y) that keeps its dip direction: the arc reaches
-            // both ends and does not pass the height of its centre.
-            const double cy = fault.arc_centre[1], r = fault.arc_radius;
-            if (std::abs(y_top - cy) > r * (1 + 1e-12) ||
-                std::abs(y_bot - cy) > r * (1 + 1e-12))
-              throw_input_error(arc,
-                                "the arc misses the box: the circle does not "
-                                "reach from the depth where it begins to the "
-                                "base");
-            if (y_bot < cy - 1e-9 * width && cy < y_top - 1e-9 * width)
-              throw_input_error(arc,
-                                "the arc passes the height of its centre "
-                                "between where it begins and the base, so "
-                                "the fault would turn back");
-            fault.choose_branch(
-              0.5 * (fault.arc_from_depth + interfaces.front() - y_bot));
-            // The surface trace where the arc and the planar part imply it.
-            const double x_junction =
-              fault.arc_centre[0] +
-              fault.branch *
-                std::sqrt(std::max(0.0, r * r - (y_top - cy) * (y_top - cy)));
-            const double implied = x_junction - fault.direction *
-                                                  fault.arc_from_depth /
-                                                  std::tan(fault.dip);
-            if (std::isnan(surface_x_given[k]))
-              fault.surface_x = implied;
-            else if (std::abs(surface_x_given[k] - implied) > 1e-6 * width)
-              throw_input_error(where + "Fault surface x",
-                                "the arc and the planar part imply " +
-                                  std::to_string(implied / scale) +
-                                  "; give that or `auto`");
-            // The arc must begin on a row of the coarse mesh.
-            bool on_row = fault.arc_from_depth == 0;
-            for (unsigned int layer = 0; layer + 1 < interfaces.size(); ++layer)
-              for (unsigned int c = 0; c <= cells_per_layer[layer]; ++c)
-                on_row = on_row ||
-                         std::abs(interfaces[layer] -
-                                  (interfaces[layer] - interfaces[layer + 1]) *
-                                    c / cells_per_layer[layer] -
-                                  y_top) < 1e-9 * width;
-            if (!on_row)
-              throw_input_error(where + "Fault arc from depth",
-                                "must be a row of the coarse mesh (a layer "
-                                "interface or a row of Cells per layer)");
-          }
-        for (const double y : {interfaces.front(), interfaces.back()})
-          if (!(fault.x_at(y) > 0 && fault.x_at(y) < width))
-            throw_input_error(where + "Fault surface x",
-                              "the fault must cross the box from the top "
-                              "to the base, but it leaves it at y = " +
-                                std::to_string(y / scale) + " (x = " +
-                                std::to_string(fault.x_at(y) / scale) + ")");
-      }
+      place_fault(k, scale);
     if (!faults.empty() && cells_across < faults.size() + 1)
       throw_input_error(where + "Cells across",
                         "needs at least one cell between two faults and "
                         "beside each (" +
                           std::to_string(faults.size() + 1) + ")");
+    check_faults_apart(scale);
+  }
+
+  template <int dim>
+  void
+  LayeredBox<dim>::parse_fault_geometry(ParameterHandler &prm,
+                                        const double      scale)
+  {
+    const std::string              where = "Geometry/Layered box/";
+    const std::vector<std::string> surface_xs =
+      split_list(prm.get("Fault surface x"));
+    const unsigned int n_faults = surface_xs.size();
+    faults.assign(n_faults, FaultTrace());
+    surface_x_given.assign(n_faults, 0);
+    if (n_faults == 0)
+      return;
+    // One value for all faults or one per fault.
+    const auto per_fault = [&](const std::string &entry, const char separator) {
+      std::vector<std::string> items = split_list(prm.get(entry), separator);
+      if (items.empty())
+        items.emplace_back();
+      if (items.size() == 1)
+        items.resize(n_faults, items.front());
+      if (items.size() != n_faults)
+        throw_input_error(where + entry,
+                          "needs one value, or one per fault (" +
+                            std::to_string(n_faults) + ")");
+      return items;
+    };
+    const auto names   = per_fault("Fault names", ',');
+    const auto dips    = per_fault("Fault dip", ',');
+    const auto towards = per_fault("Fault dips towards", ',');
+    const auto centres =
+      arc_centres(Utilities::trim(prm.get("Fault arc centre")), n_faults);
+    const auto radii  = per_fault("Fault arc radius", ',');
+    const auto depths = per_fault("Fault arc from depth", ',');
+    for (unsigned int k = 0; k < n_faults; ++k)
+      {
+        FaultTrace &fault = faults[k];
+        fault.name        = Utilities::trim(names[k]);
+        for (unsigned int j = 0; j < k; ++j)
+          if (faults[j].name == fault.name)
+            throw_input_error(where + "Fault names",
+                              "the name <" + fault.name + "> is given twice");
+        const double dip_degrees = parse_number(dips[k], where + "Fault dip");
+        if (!(dip_degrees > 0 && dip_degrees <= 90))
+          throw_input_error(where + "Fault dip",
+                            "must lie in (0, 90] degrees, got " + dips[k]);
+        fault.dip              = dip_degrees * numbers::PI / 180;
+        const std::string side = Utilities::trim(towards[k]);
+        if (side != "right" && side != "left")
+          throw_input_error(where + "Fault dips towards",
+                            "<" + side + "> is neither right nor left");
+        fault.direction          = side == "right" ? 1 : -1;
+        const std::string centre = Utilities::trim(centres[k]);
+        fault.has_arc            = !centre.empty();
+        if (fault.has_arc)
+          parse_fault_arc(fault, centre, radii[k], depths[k], scale);
+        const std::string x = Utilities::trim(surface_xs[k]);
+        if (x == "auto" && !fault.has_arc)
+          throw_input_error(where + "Fault surface x",
+                            "`auto` needs a Fault arc centre");
+        surface_x_given[k] =
+          x == "auto" ? std::nan("")
+                      : parse_number(x, where + "Fault surface x") * scale;
+      }
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  LayeredBox<dim>::arc_centres(const std::string &entry,
+                               const unsigned int n_faults)
+  {
+    std::vector<std::string> centres;
+    std::istringstream       stream(entry);
+    std::string              item;
+    while (std::getline(stream, item, ';'))
+      centres.push_back(Utilities::trim(item));
+    if (entry.empty() || entry.back() == ';')
+      centres.emplace_back();
+    if (centres.size() == 1)
+      centres.resize(n_faults, centres.front());
+    if (centres.size() != n_faults)
+      throw_input_error("Geometry/Layered box/Fault arc centre",
+                        "needs one `x, y` (or nothing) per fault (" +
+                          std::to_string(n_faults) + "), separated by `;`");
+    return centres;
+  }
+
+  template <int dim>
+  void
+  LayeredBox<dim>::parse_fault_arc(FaultTrace        &fault,
+                                   const std::string &centre,
+                                   const std::string &radius,
+                                   const std::string &from_depth,
+                                   const double       scale)
+  {
+    const std::string where = "Geometry/Layered box/";
+    const auto        c     = split_list(centre);
+    if (c.size() != 2)
+      throw_input_error(where + "Fault arc centre",
+                        "<" + centre + "> is not `x, y`");
+    fault.arc_centre =
+      Point<2>(parse_number(c[0], where + "Fault arc centre"),
+               parse_number(c[1], where + "Fault arc centre")) *
+      scale;
+    fault.arc_radius = parse_number(radius, where + "Fault arc radius") * scale;
+    fault.arc_from_depth =
+      parse_number(from_depth, where + "Fault arc from depth") * scale;
+    if (!(fault.arc_radius > 0))
+      throw_input_error(where + "Fault arc radius",
+                        "must be positive for an arc");
+    if (!(fault.arc_from_depth >= 0))
+      throw_input_error(where + "Fault arc from depth", "must not be negative");
+  }
+
+  template <int dim>
+  void
+  LayeredBox<dim>::place_fault(const unsigned int k, const double scale)
+  {
+    const std::string where = "Geometry/Layered box/";
+    FaultTrace       &fault = faults[k];
+    fault.top_y             = interfaces.front();
+    fault.surface_x         = surface_x_given[k];
+    if (fault.has_arc)
+      place_fault_arc(k, scale);
+    for (const double y : {interfaces.front(), interfaces.back()})
+      if (!(fault.x_at(y) > 0 && fault.x_at(y) < width))
+        throw_input_error(where + "Fault surface x",
+                          "the fault must cross the box from the top "
+                          "to the base, but it leaves it at y = " +
+                            std::to_string(y / scale) + " (x = " +
+                            std::to_string(fault.x_at(y) / scale) + ")");
+  }
+
+  template <int dim>
+  void
+  LayeredBox<dim>::place_fault_arc(const unsigned int k, const double scale)
+  {
+    const std::string where = "Geometry/Layered box/";
+    FaultTrace       &fault = faults[k];
+    const std::string arc   = where + "Fault arc centre";
+    const double      y_top = interfaces.front() - fault.arc_from_depth;
+    const double      y_bot = interfaces.back();
+    if (!(y_top > y_bot))
+      throw_input_error(where + "Fault arc from depth",
+                        "must lie above the base");
+    // A graph x(y) that keeps its dip direction: the arc reaches both ends
+    // and does not pass the height of its centre.
+    const double cy = fault.arc_centre[1], r = fault.arc_radius;
+    if (std::abs(y_top - cy) > r * (1 + 1e-12) ||
+        std::abs(y_bot - cy) > r * (1 + 1e-12))
+      throw_input_error(arc,
+                        "the arc misses the box: the circle does not "
+                        "reach from the depth where it begins to the "
+                        "base");
+    if (y_bot < cy - 1e-9 * width && cy < y_top - 1e-9 * width)
+      throw_input_error(arc,
+                        "the arc passes the height of its centre "
+                        "between where it begins and the base, so "
+                        "the fault would turn back");
+    fault.choose_branch(0.5 *
+                        (fault.arc_from_depth + interfaces.front() - y_bot));
+    // The surface trace where the arc and the planar part imply it.
+    const double x_junction =
+      fault.arc_centre[0] +
+      fault.branch *
+        std::sqrt(std::max(0.0, r * r - (y_top - cy) * (y_top - cy)));
+    const double implied =
+      x_junction - fault.direction * fault.arc_from_depth / std::tan(fault.dip);
+    if (std::isnan(surface_x_given[k]))
+      fault.surface_x = implied;
+    else if (std::abs(surface_x_given[k] - implied) > 1e-6 * width)
+      throw_input_error(where + "Fault surface x",
+                        "the arc and the planar part imply " +
+                          std::to_string(implied / scale) +
+                          "; give that or `auto`");
+    // The arc must begin on a row of the coarse mesh.
+    bool on_row = fault.arc_from_depth == 0;
+    for (unsigned int layer = 0; layer + 1 < interfaces.size(); ++layer)
+      for (unsigned int c = 0; c <= cells_per_layer[layer]; ++c)
+        on_row =
+          on_row || std::abs(interfaces[layer] -
+                             (interfaces[layer] - interfaces[layer + 1]) * c /
+                               cells_per_layer[layer] -
+                             y_top) < 1e-9 * width;
+    if (!on_row)
+      throw_input_error(where + "Fault arc from depth",
+                        "must be a row of the coarse mesh (a layer "
+                        "interface or a row of Cells per layer)");
+  }
+
+  template <int dim>
+  void
+  LayeredBox<dim>::check_faults_apart(const double scale)
+  {
     // Left to right at mid-depth; they may not meet or cross in the box.
     const double y_mid = 0.5 * (interfaces.front() + interfaces.back());
     std::sort(faults.begin(),
@@ -520,7 +556,7 @@ namespace lithostress
           const double y = interfaces.back() +
                            (interfaces.front() - interfaces.back()) * i / 256;
           if (!(faults[k].x_at(y) < faults[k + 1].x_at(y) - 1e-6 * width))
-            throw_input_error(where + "Fault surface x",
+            throw_input_error("Geometry/Layered box/Fault surface x",
                               "the faults <" + faults[k].name + "> and <" +
                                 faults[k + 1].name +
                                 "> meet or cross in the box (at y = " +

@@ -84,6 +84,8 @@ namespace lithostress
                                         const double      scale)
   {
     const std::string where = "Geometry/Subduction zone/";
+    length_scale            = scale;
+    length_unit             = prm.get("Length unit");
     prm.enter_subsection("Subduction zone");
     width         = prm.get_double("Width") * scale;
     base          = prm.get_double("Base") * scale;
@@ -214,105 +216,129 @@ namespace lithostress
   }
 
   template <int dim>
-  void
-  SubductionZone<dim>::create_coarse_mesh(
-    parallel::distributed::Triangulation<dim> &tria) const
+  unsigned int
+  SubductionZone<dim>::cells_along(const double length) const
   {
-    using Curve      = SectionCurve;
-    const auto count = [&](const double length) {
-      return std::max(1u,
-                      static_cast<unsigned int>(
-                        std::lround(std::abs(length) / cell_size)));
-    };
-    const double r_crust = radius - oceanic_crust, r_lid = radius - oceanic_lid;
+    return std::max(
+      1u, static_cast<unsigned int>(std::lround(std::abs(length) / cell_size)));
+  }
+
+  template <int dim>
+  Tensor<1, 2>
+  SubductionZone<dim>::direction_to(const Point<2> &p) const
+  {
+    const Tensor<1, 2> d = p - centre;
+    return d / d.norm();
+  }
+
+  template <int dim>
+  Point<2>
+  SubductionZone<dim>::at_base(const Tensor<1, 2> &u) const
+  {
+    return Point<2>(centre + ((base - centre[1]) / u[1]) * u);
+  }
+
+  template <int dim>
+  std::vector<Tensor<1, 2>>
+  SubductionZone<dim>::slab_stations() const
+  {
+    return {direction_to(Point<2>(centre[0], sea_floor)),
+            direction_to(trench()),
+            direction_to(crossing(continental_elastic)),
+            direction_to(crossing(continental_crust))};
+  }
+
+  template <int dim>
+  typename SubductionZone<dim>::CellCounts
+  SubductionZone<dim>::cell_counts(
+    const std::vector<Tensor<1, 2>> &station) const
+  {
     const Point<2> trench = this->trench();
     const Point<2> p1     = crossing(continental_elastic),
                    p2     = crossing(continental_crust);
-    // Stations across the slab: radial lines through the apex, the
-    // trench and the two crossings (unit directions from the centre).
-    const auto unit = [&](const Point<2> &p) {
-      const Tensor<1, 2> d = p - centre;
-      return d / d.norm();
-    };
-    const std::vector<Tensor<1, 2>> station = {
-      unit(Point<2>(centre[0], sea_floor)), unit(trench), unit(p1), unit(p2)};
-    const auto on = [&](const Tensor<1, 2> &u, const double r) {
-      return Point<2>(centre + r * u);
-    };
-    const auto at_base = [&](const Tensor<1, 2> &u) {
-      return Point<2>(centre + ((base - centre[1]) / u[1]) * u);
-    };
-    const auto arc = [&](const Point<2> &a, const Point<2> &b) {
-      return Curve::arc(centre, a, b);
-    };
-
     // Cells through the layers. The continental layers' left sides are
     // the plate boundary's arc segments, which are also the slab's blocks
     // along it: their counts serve both (the larger of the two lengths).
     // The oceanic and continental mantles meet at the slab's end and need
     // equal, even counts.
     const auto arc_length = [&](const Point<2> &a, const Point<2> &b) {
-      return radius * std::acos(std::clamp(unit(a) * unit(b), -1.0, 1.0));
+      return radius *
+             std::acos(
+               std::clamp(direction_to(a) * direction_to(b), -1.0, 1.0));
     };
-    const Point<2>     slab_base(x_on_circle(base, radius), base);
-    const unsigned int n_crust = count(oceanic_crust),
-                       n_lid   = count(oceanic_lid - oceanic_crust);
+    const Point<2> slab_base(x_on_circle(base, radius), base);
+    CellCounts     n;
+    n.crust = cells_along(oceanic_crust);
+    n.lid   = cells_along(oceanic_lid - oceanic_crust);
     // At least two cells through the upper crust: in the thesis's section
     // (10 km below land at sea level) their line lies 5 km down, at the
     // sea floor's depth, where the stripped load of density stripping
     // against the oceanic column jumps (water above, crust below). A jump
     // of the load inside a cell is invisible to the stress-recovery and
     // goal-oriented indicators, which would then never refine there.
-    unsigned int n_continental[3] = {
-      std::max({2u, count(continental_elastic), count(arc_length(trench, p1))}),
-      std::max(count(continental_crust - continental_elastic),
-               count(arc_length(p1, p2))),
-      std::max({count(sea_floor - oceanic_lid - base),
-                count(land_height - continental_crust - base),
-                count(arc_length(p2, slab_base))})};
-    n_continental[2] += n_continental[2] % 2;
-    const unsigned int n_wedge = count(coast_x - trench_x);
-    const unsigned int n_upper = n_continental[0], n_lower = n_continental[1],
-                       n_mantle        = n_continental[2];
-    const unsigned int n_along_slab[3] = {
-      count(radius * std::acos(station[0] * station[1])), n_upper, n_lower};
+    n.continental[0] = std::max({2u,
+                                 cells_along(continental_elastic),
+                                 cells_along(arc_length(trench, p1))});
+    n.continental[1] =
+      std::max(cells_along(continental_crust - continental_elastic),
+               cells_along(arc_length(p1, p2)));
+    n.continental[2] =
+      std::max({cells_along(sea_floor - oceanic_lid - base),
+                cells_along(land_height - continental_crust - base),
+                cells_along(arc_length(p2, slab_base))});
+    n.continental[2] += n.continental[2] % 2;
+    n.wedge         = cells_along(coast_x - trench_x);
+    n.along_slab[0] = cells_along(radius * std::acos(station[0] * station[1]));
+    n.along_slab[1] = n.continental[0];
+    n.along_slab[2] = n.continental[1];
+    return n;
+  }
 
-    BlockMesh blocks;
-    // A flat layer from x0 to x1 between the heights bottom and top.
-    const auto rectangle = [&](const double             x0,
-                               const double             x1,
-                               const double             bottom,
-                               const double             top,
-                               const unsigned int       n_across,
-                               const types::material_id material) {
-      const Point<2> a(x0, bottom), b(x1, bottom), c(x1, top), d(x0, top);
-      blocks.add_block(Curve::line(a, b),
-                       Curve::line(b, c),
-                       Curve::line(c, d),
-                       Curve::line(d, a),
-                       count(x1 - x0),
-                       n_across,
-                       material);
+  template <int dim>
+  void
+  SubductionZone<dim>::build_oceanic_plate(BlockMesh        &blocks,
+                                           const CellCounts &n) const
+  {
+    const double       x0 = 0, x1 = centre[0];
+    const double       ys[4]       = {sea_floor,
+                                      sea_floor - oceanic_crust,
+                                      sea_floor - oceanic_lid,
+                                      base};
+    const unsigned int n_across[3] = {n.crust, n.lid, n.continental[2]};
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const Point<2> a(x0, ys[k + 1]), b(x1, ys[k + 1]), c(x1, ys[k]),
+          d(x0, ys[k]);
+        blocks.add_block(SectionCurve::line(a, b),
+                         SectionCurve::line(b, c),
+                         SectionCurve::line(c, d),
+                         SectionCurve::line(d, a),
+                         cells_along(x1 - x0),
+                         n_across[k],
+                         k);
+      }
+  }
+
+  template <int dim>
+  void
+  SubductionZone<dim>::build_slab_blocks(
+    BlockMesh                       &blocks,
+    const std::vector<Tensor<1, 2>> &station,
+    const CellCounts                &n) const
+  {
+    using Curve          = SectionCurve;
+    const double r_crust = radius - oceanic_crust, r_lid = radius - oceanic_lid;
+    const auto   on = [&](const Tensor<1, 2> &u, const double r) {
+      return Point<2>(centre + r * u);
     };
-    // The oceanic plate seaward of the circle's top: flat layers.
-    {
-      const double       x0 = 0, x1 = centre[0];
-      const double       ys[4] = {sea_floor,
-                                  sea_floor - oceanic_crust,
-                                  sea_floor - oceanic_lid,
-                                  base};
-      const unsigned int n[3]  = {n_crust, n_lid, n_mantle};
-      for (unsigned int k = 0; k < 3; ++k)
-        {
-          rectangle(x0, x1, ys[k + 1], ys[k], n[k], k);
-        }
-    }
-    // The slab between consecutive stations: crust, lid and mantle.
+    const auto arc = [&](const Point<2> &a, const Point<2> &b) {
+      return Curve::arc(centre, a, b);
+    };
     for (unsigned int k = 0; k < 3; ++k)
       {
         const Tensor<1, 2> &ua = station[k], &ub = station[k + 1];
-        const double        r[3] = {radius, r_crust, r_lid};
-        const unsigned int  n[2] = {n_crust, n_lid};
+        const double        r[3]    = {radius, r_crust, r_lid};
+        const unsigned int  n_in[2] = {n.crust, n.lid};
         for (unsigned int layer = 0; layer < 2; ++layer)
           {
             const double outer = r[layer], inner = r[layer + 1];
@@ -320,118 +346,140 @@ namespace lithostress
                              Curve::line(on(ub, inner), on(ub, outer)),
                              arc(on(ub, outer), on(ua, outer)),
                              Curve::line(on(ua, outer), on(ua, inner)),
-                             n_along_slab[k],
-                             n[layer],
+                             n.along_slab[k],
+                             n_in[layer],
                              layer);
           }
         blocks.add_block(Curve::line(at_base(ua), at_base(ub)),
                          Curve::line(at_base(ub), on(ub, r_lid)),
                          arc(on(ub, r_lid), on(ua, r_lid)),
                          Curve::line(on(ua, r_lid), at_base(ua)),
-                         n_along_slab[k],
-                         n_mantle,
+                         n.along_slab[k],
+                         n.continental[2],
                          2);
       }
-    // The slab's end, from the last station to the base.
-    {
-      const Tensor<1, 2> &u    = station[3];
-      const double        r[3] = {radius, r_crust, r_lid};
-      const unsigned int  n[2] = {n_crust, n_lid};
-      for (unsigned int layer = 0; layer < 2; ++layer)
-        {
-          const double   outer = r[layer], inner = r[layer + 1];
-          const Point<2> b_outer(x_on_circle(base, outer), base),
-            b_inner(x_on_circle(base, inner), base);
-          blocks.add_block(arc(on(u, inner), b_inner),
-                           Curve::line(b_inner, b_outer),
-                           arc(b_outer, on(u, outer)),
-                           Curve::line(on(u, outer), on(u, inner)),
-                           n_mantle,
-                           n[layer],
-                           layer);
-        }
-      const Point<2> b_lid(x_on_circle(base, r_lid), base);
-      blocks.add_triangle(Curve::line(on(u, r_lid), at_base(u)),
-                          Curve::line(at_base(u), b_lid),
-                          arc(b_lid, on(u, r_lid)),
-                          n_mantle,
-                          2);
-    }
-    // The continental plate. Each layer (upper crust, lower crust, mantle)
-    // lies between the plate boundary's arc from left[k] to left[k + 1]
-    // and the right edge; its top and bottom follow the surface, which
-    // rises from the trench to the coast and is flat beyond, so they kink
-    // below the coast. A layer whose arc ends left of the coast is a wedge
-    // block to the coast and a flat block beyond; the layer whose arc spans
-    // the coast is one block whose top kinks (a vertex at the kink); the
-    // layers below it are one block each, with as many cells along as the
-    // wedge and flat blocks above together.
-    {
-      const Point<2> b_outer(x_on_circle(base, radius), base);
-      const double   depth[3] = {0, continental_elastic, continental_crust};
-      const Point<2> left[4]  = {trench, p1, p2, b_outer};
-      const auto     top_at   = [&](const unsigned int k, const double x) {
-        return Point<2>(x, land_surface(x) - depth[k]);
-      };
-      const auto bottom_at = [&](const unsigned int k, const double x) {
-        return k < 2 ? top_at(k + 1, x) : Point<2>(x, base);
-      };
-      const unsigned int n_flat = count(width - coast_x);
-      for (unsigned int k = 0; k < 3; ++k)
-        {
-          const types::material_id material = 3 + k;
-          if (coast_x > left[k + 1][0])
-            {
-              const Point<2> coast_top    = top_at(k, coast_x),
-                             coast_bottom = bottom_at(k, coast_x);
-              blocks.add_block(Curve::line(left[k + 1], coast_bottom),
-                               Curve::line(coast_bottom, coast_top),
-                               Curve::line(coast_top, left[k]),
-                               arc(left[k], left[k + 1]),
-                               n_wedge,
-                               n_continental[k],
-                               material);
-              blocks.add_block(Curve::line(coast_bottom, bottom_at(k, width)),
-                               Curve::line(bottom_at(k, width),
-                                           top_at(k, width)),
-                               Curve::line(top_at(k, width), coast_top),
-                               Curve::line(coast_top, coast_bottom),
-                               n_flat,
-                               n_continental[k],
-                               material);
-            }
-          else if (coast_x > left[k][0])
-            {
-              const Point<2> kink = top_at(k, coast_x);
-              blocks.add_block(Curve::line(left[k + 1], bottom_at(k, width)),
-                               Curve::line(bottom_at(k, width),
-                                           top_at(k, width)),
-                               Curve::join(Curve::line(top_at(k, width), kink),
-                                           Curve::line(kink, left[k]),
-                                           n_flat / double(n_flat + n_wedge)),
-                               arc(left[k], left[k + 1]),
-                               n_flat + n_wedge,
-                               n_continental[k],
-                               material);
-            }
-          else
+  }
+
+  template <int dim>
+  void
+  SubductionZone<dim>::build_slab_end(BlockMesh          &blocks,
+                                      const Tensor<1, 2> &u,
+                                      const CellCounts   &n) const
+  {
+    using Curve          = SectionCurve;
+    const double r_crust = radius - oceanic_crust, r_lid = radius - oceanic_lid;
+    const auto   on  = [&](const double r) { return Point<2>(centre + r * u); };
+    const auto   arc = [&](const Point<2> &a, const Point<2> &b) {
+      return Curve::arc(centre, a, b);
+    };
+    const unsigned int n_mantle = n.continental[2];
+    const double       r[3]     = {radius, r_crust, r_lid};
+    const unsigned int n_in[2]  = {n.crust, n.lid};
+    for (unsigned int layer = 0; layer < 2; ++layer)
+      {
+        const double   outer = r[layer], inner = r[layer + 1];
+        const Point<2> b_outer(x_on_circle(base, outer), base),
+          b_inner(x_on_circle(base, inner), base);
+        blocks.add_block(arc(on(inner), b_inner),
+                         Curve::line(b_inner, b_outer),
+                         arc(b_outer, on(outer)),
+                         Curve::line(on(outer), on(inner)),
+                         n_mantle,
+                         n_in[layer],
+                         layer);
+      }
+    const Point<2> b_lid(x_on_circle(base, r_lid), base);
+    blocks.add_triangle(Curve::line(on(r_lid), at_base(u)),
+                        Curve::line(at_base(u), b_lid),
+                        arc(b_lid, on(r_lid)),
+                        n_mantle,
+                        2);
+  }
+
+  template <int dim>
+  void
+  SubductionZone<dim>::build_continental_plate(BlockMesh        &blocks,
+                                               const CellCounts &n) const
+  {
+    // Each layer (upper crust, lower crust, mantle) lies between the plate
+    // boundary's arc from left[k] to left[k + 1] and the right edge; its
+    // top and bottom follow the surface, which rises from the trench to
+    // the coast and is flat beyond, so they kink below the coast. A layer
+    // whose arc ends left of the coast is a wedge block to the coast and a
+    // flat block beyond; the layer whose arc spans the coast is one block
+    // whose top kinks (a vertex at the kink); the layers below it are one
+    // block each, with as many cells along as the wedge and flat blocks
+    // above together.
+    using Curve    = SectionCurve;
+    const auto arc = [&](const Point<2> &a, const Point<2> &b) {
+      return Curve::arc(centre, a, b);
+    };
+    const Point<2> b_outer(x_on_circle(base, radius), base);
+    const double   depth[3] = {0, continental_elastic, continental_crust};
+    const Point<2> left[4]  = {trench(),
+                               crossing(continental_elastic),
+                               crossing(continental_crust),
+                               b_outer};
+    const auto     top_at   = [&](const unsigned int k, const double x) {
+      return Point<2>(x, land_surface(x) - depth[k]);
+    };
+    const auto bottom_at = [&](const unsigned int k, const double x) {
+      return k < 2 ? top_at(k + 1, x) : Point<2>(x, base);
+    };
+    const unsigned int n_flat  = cells_along(width - coast_x);
+    const unsigned int n_wedge = n.wedge;
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const types::material_id material = 3 + k;
+        if (coast_x > left[k + 1][0])
+          {
+            const Point<2> coast_top    = top_at(k, coast_x),
+                           coast_bottom = bottom_at(k, coast_x);
+            blocks.add_block(Curve::line(left[k + 1], coast_bottom),
+                             Curve::line(coast_bottom, coast_top),
+                             Curve::line(coast_top, left[k]),
+                             arc(left[k], left[k + 1]),
+                             n_wedge,
+                             n.continental[k],
+                             material);
+            blocks.add_block(Curve::line(coast_bottom, bottom_at(k, width)),
+                             Curve::line(bottom_at(k, width), top_at(k, width)),
+                             Curve::line(top_at(k, width), coast_top),
+                             Curve::line(coast_top, coast_bottom),
+                             n_flat,
+                             n.continental[k],
+                             material);
+          }
+        else if (coast_x > left[k][0])
+          {
+            const Point<2> kink = top_at(k, coast_x);
             blocks.add_block(Curve::line(left[k + 1], bottom_at(k, width)),
                              Curve::line(bottom_at(k, width), top_at(k, width)),
-                             Curve::line(top_at(k, width), left[k]),
+                             Curve::join(Curve::line(top_at(k, width), kink),
+                                         Curve::line(kink, left[k]),
+                                         n_flat / double(n_flat + n_wedge)),
                              arc(left[k], left[k + 1]),
                              n_flat + n_wedge,
-                             n_continental[k],
+                             n.continental[k],
                              material);
-        }
-    }
+          }
+        else
+          blocks.add_block(Curve::line(left[k + 1], bottom_at(k, width)),
+                           Curve::line(bottom_at(k, width), top_at(k, width)),
+                           Curve::line(top_at(k, width), left[k]),
+                           arc(left[k], left[k + 1]),
+                           n_flat + n_wedge,
+                           n.continental[k],
+                           material);
+      }
+  }
 
-    Triangulation<2> serial(tria.get_mesh_smoothing());
-    blocks.create(serial, 1e-9 * width);
-    tria.copy_triangulation(serial);
-
-    // Faces on the circles about the centre (the plate boundary, the
-    // ocean floor's bend and the slab's layers) follow a polar manifold,
-    // their cells a transfinite interpolation.
+  template <int dim>
+  void
+  SubductionZone<dim>::attach_circle_manifolds(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    const double r_crust = radius - oceanic_crust, r_lid = radius - oceanic_lid;
     const double tolerance   = 1e-9 * width;
     const auto   on_a_circle = [&](const auto &face) {
       const double r0 = face->vertex(0).distance(centre),
@@ -457,7 +505,14 @@ namespace lithostress
     TransfiniteInterpolationManifold<2> transfinite;
     transfinite.initialize(tria);
     tria.set_manifold(2, transfinite);
+  }
 
+  template <int dim>
+  void
+  SubductionZone<dim>::set_boundary_ids(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    const double tolerance = 1e-9 * width;
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
@@ -472,6 +527,32 @@ namespace lithostress
               : c[0] < trench_x ? 3
                                 : 4);
           }
+  }
+
+  template <int dim>
+  void
+  SubductionZone<dim>::create_coarse_mesh(
+    parallel::distributed::Triangulation<dim> &tria) const
+  {
+    // Stations across the slab: radial lines through the apex, the
+    // trench and the two crossings (unit directions from the centre).
+    const std::vector<Tensor<1, 2>> station = slab_stations();
+    const CellCounts                n       = cell_counts(station);
+    BlockMesh                       blocks;
+    build_oceanic_plate(blocks, n);
+    build_slab_blocks(blocks, station, n);
+    build_slab_end(blocks, station[3], n);
+    build_continental_plate(blocks, n);
+
+    Triangulation<2> serial(tria.get_mesh_smoothing());
+    blocks.create(
+      serial, 1e-9 * width, mesh_entry(), length_scale, length_unit);
+    tria.copy_triangulation(serial);
+    // Faces on the circles about the centre (the plate boundary, the
+    // ocean floor's bend and the slab's layers) follow a polar manifold,
+    // their cells a transfinite interpolation.
+    attach_circle_manifolds(tria);
+    set_boundary_ids(tria);
   }
 
   template <int dim>

@@ -26,15 +26,6 @@ namespace lithostress
       "`0, 5: 1030; 5, 11: 2900; 11, 100: 3300`. Empty = no stripping. "
       "The body force is then -(rho - rho_ref(depth)) g in y, and stresses "
       "are relative to the reference column.");
-    prm.declare_entry("Depth origin",
-                      "0",
-                      Patterns::Double(),
-                      "y [length unit] at which depth is zero (sea level); "
-                      "depth = origin - y.");
-    prm.declare_entry("Gravity",
-                      "9.81",
-                      Patterns::Double(0),
-                      "Gravitational acceleration g [m/s^2].");
     prm.leave_subsection();
   }
 
@@ -47,8 +38,8 @@ namespace lithostress
     length_scale            = model.length_scale;
     prm.enter_subsection("Density stripping");
     const std::string column = prm.get("Reference column");
-    depth_origin             = prm.get_double("Depth origin") * length_scale;
-    acceleration             = prm.get_double("Gravity");
+    depth_origin             = model.gravity.depth_origin;
+    acceleration             = model.gravity.acceleration;
     prm.leave_subsection();
     bottoms.clear();
     densities.clear();

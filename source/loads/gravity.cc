@@ -11,20 +11,17 @@ namespace lithostress
                       "false",
                       Patterns::Bool(),
                       "Apply the body force -rho g in y to every material.");
-    prm.declare_entry("Acceleration",
-                      "9.81",
-                      Patterns::Double(0),
-                      "Gravitational acceleration g [m/s^2].");
     prm.leave_subsection();
   }
 
   template <int dim>
   bool
-  Gravity<dim>::parse_parameters(ParameterHandler &prm)
+  Gravity<dim>::parse_parameters(ParameterHandler            &prm,
+                                 const ModelDescription<dim> &model)
   {
     prm.enter_subsection("Gravity");
     const bool enabled = prm.get_bool("Enabled");
-    acceleration       = prm.get_double("Acceleration");
+    acceleration       = model.gravity.acceleration;
     prm.leave_subsection();
     return enabled;
   }

@@ -19,11 +19,6 @@ namespace lithostress
                       Patterns::Anything(),
                       "Density rho_f [kg/m^3] of the fluid on each part, in "
                       "the same order; > 0.");
-    prm.declare_entry("Gravity",
-                      "9.81",
-                      Patterns::Double(0),
-                      "Gravitational acceleration g [m/s^2] of the restoring "
-                      "force rho_f g u_y.");
     prm.leave_subsection();
   }
 
@@ -39,7 +34,7 @@ namespace lithostress
     prm.enter_subsection("Isostatic restoring force");
     const auto   names     = split_list(prm.get("Boundary parts"));
     const auto   densities = split_list(prm.get("Fluid densities"));
-    const double g         = prm.get_double("Gravity");
+    const double g         = model.gravity.acceleration;
     prm.leave_subsection();
     if (names.size() != densities.size())
       throw_input_error(where + "Fluid densities",

@@ -34,7 +34,7 @@ namespace lithostress
     active.clear();
     prm.enter_subsection("Loads");
     auto       gravity      = std::make_unique<Gravity<dim>>();
-    const bool with_gravity = gravity->parse_parameters(prm);
+    const bool with_gravity = gravity->parse_parameters(prm, model);
     if (with_gravity)
       active.push_back(std::move(gravity));
     auto stripping = std::make_unique<DensityStripping<dim>>();

@@ -3,9 +3,10 @@
 namespace lithostress
 {
   template <int dim>
-  StressModel<dim>::StressModel(const MaterialLibrary     &materials,
-                                const PlaneState           plane_state,
-                                const LoadCollection<dim> &loads)
+  StressModel<dim>::StressModel(
+    const MaterialLibrary                               &materials,
+    const PlaneState                                     plane_state,
+    const std::vector<const InitialStressSource<dim> *> &sources)
       : materials(materials)
       , plane_state(plane_state)
   {
@@ -15,9 +16,9 @@ namespace lithostress
         maxwell_of.emplace(m.id, MaxwellMaterial<dim>(m, plane_state));
       }
     step_moduli_of = moduli_of;
-    for (const auto &load : loads.loads())
-      if (load->has_initial_stress())
-        initial_stress_loads.push_back(load.get());
+    for (const InitialStressSource<dim> *source : sources)
+      if (source->has_initial_stress())
+        initial_stress_loads.push_back(source);
   }
 
   template <int dim>
@@ -30,7 +31,7 @@ namespace lithostress
     StressState<dim>          s;
     s.in_plane = m.stress(strain);
     s.zz       = m.sigma_zz(strain);
-    for (const Load<dim> *load : initial_stress_loads)
+    for (const InitialStressSource<dim> *load : initial_stress_loads)
       load->add_initial_stress(p, materials(id), m, s.in_plane, s.zz);
     return s;
   }
@@ -42,7 +43,7 @@ namespace lithostress
     StressState<dim>
     stress_with_initial_strain(const ElasticModuli<dim>             &m,
                                const Material                       &material,
-                               const std::vector<const Load<dim> *> &loads,
+                               const std::vector<const InitialStressSource<dim> *> &loads,
                                const Point<dim>                     &p,
                                const SymmetricTensor<2, dim>        &strain,
                                const SymmetricTensor<2, 3>          &initial)
@@ -53,7 +54,7 @@ namespace lithostress
       const auto [sigma, zz] = m.initial_strain_stress(initial);
       s.in_plane += sigma;
       s.zz += zz;
-      for (const Load<dim> *load : loads)
+      for (const InitialStressSource<dim> *load : loads)
         load->add_initial_stress(p, material, m, s.in_plane, s.zz);
       return s;
     }

@@ -4,7 +4,7 @@
 
 #include <lithostress/base/input_error.h>
 #include <lithostress/output/figures.h>
-#include <lithostress/output/output_file.h>
+#include <lithostress/base/output_file.h>
 
 #include <cmath>
 #include <cstdio>

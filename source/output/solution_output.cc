@@ -2,7 +2,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/output/output_file.h>
+#include <lithostress/base/output_file.h>
 #include <lithostress/output/solution_output.h>
 #include <lithostress/postprocess/stress_postprocessor.h>
 

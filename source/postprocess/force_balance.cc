@@ -2,8 +2,8 @@
 #include <deal.II/hp/fe_values.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/discretization/elastic_assembler.h>
-#include <lithostress/output/output_file.h>
+#include <lithostress/assembly/elastic_assembler.h>
+#include <lithostress/base/output_file.h>
 #include <lithostress/postprocess/force_balance.h>
 
 #include <fstream>

@@ -63,28 +63,19 @@ namespace lithostress
       "does. automatic = added when the model has no full body force "
       "(gravity off, or densities stripped), since its stresses then lack "
       "the overburden.");
-    prm.declare_entry("Depth origin",
-                      "0",
-                      Patterns::Double(),
-                      "y [length unit] of zero depth for the lithostatic "
-                      "pressure; depth = max(0, origin - y).");
-    prm.declare_entry("Gravity",
-                      "9.81",
-                      Patterns::Double(0),
-                      "g [m/s^2] of the lithostatic pressure.");
     prm.leave_subsection();
   }
 
   void
   GriffithFailure::parse_parameters(ParameterHandler &prm,
-                                    const double      length_scale)
+                                    const GravityField &gravity_field)
   {
     prm.enter_subsection("Griffith failure");
     const double new_ratio    = prm.get_double("Crack closure stress ratio");
     const double new_friction = prm.get_double("Crack friction");
     lithostatic_choice        = prm.get("Lithostatic pressure");
-    depth_origin              = prm.get_double("Depth origin") * length_scale;
-    gravity                   = prm.get_double("Gravity");
+    depth_origin              = gravity_field.depth_origin;
+    gravity                   = gravity_field.acceleration;
     prm.leave_subsection();
 
     if (!(new_ratio < 0) || !std::isfinite(new_ratio))

@@ -4,7 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/hp/fe_values.h>
 
-#include <lithostress/output/output_file.h>
+#include <lithostress/base/output_file.h>
 #include <lithostress/postprocess/surface_profile.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/output/output_file.h>
+#include <lithostress/base/output_file.h>
 #include <lithostress/postprocess/thin_plate_flexure.h>
 
 #include <cmath>
@@ -37,14 +37,14 @@ namespace lithostress
                       "2900",
                       Patterns::Double(0),
                       "Density of the fluid foundation [kg/m^3].");
-    prm.declare_entry("Gravity", "9.81", Patterns::Double(0), "g [m/s^2].");
     prm.leave_subsection();
   }
 
   void
   ThinPlateFlexure::parse_parameters(ParameterHandler      &prm,
                                      const MaterialLibrary &materials,
-                                     const double           scale)
+                                     const double           scale,
+                                     const double           g)
   {
     prm.enter_subsection("Thin plate comparison");
     enabled       = prm.get_bool("Enabled");
@@ -52,7 +52,7 @@ namespace lithostress
     line_load     = prm.get_double("Line load");
     thickness     = prm.get_double("Plate thickness") * scale;
     fluid_density = prm.get_double("Fluid density");
-    gravity       = prm.get_double("Gravity");
+    gravity       = g;
     prm.leave_subsection();
     if (!enabled)
       return;
@@ -83,7 +83,7 @@ namespace lithostress
     csv << "quantity,finite_element,thin_plate\n" << std::setprecision(12);
     std::ostringstream out;
     out << std::fixed << std::setprecision(2);
-    out << "\nThin-plate comparison (SPEC §4): D = " << std::scientific
+    out << "\nThin-plate comparison (thesis §6.1.2): D = " << std::scientific
         << std::setprecision(4) << rigidity << " N m, alpha = " << std::fixed
         << std::setprecision(2) << alpha / 1e3 << " km, w0 = " << w0 << " m\n";
     out << "  forebulge       distance from load [km]   height [m]\n";

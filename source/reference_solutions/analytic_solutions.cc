@@ -22,10 +22,6 @@ namespace lithostress
                       "-10",
                       Patterns::Double(),
                       "Height y of the base, fixed vertically [length unit].");
-    prm.declare_entry("Gravity",
-                      "9.81",
-                      Patterns::Double(0),
-                      "Gravitational acceleration g [m/s^2].");
     prm.leave_subsection();
   }
 
@@ -39,7 +35,7 @@ namespace lithostress
     prm.enter_subsection("Lithostatic column");
     top            = prm.get_double("Top") * scale;
     base           = prm.get_double("Base") * scale;
-    const double g = prm.get_double("Gravity");
+    const double g = this->gravity.acceleration;
     prm.leave_subsection();
     const Material          &m = materials.materials().front();
     const ElasticModuli<dim> moduli(m, state);
@@ -391,7 +387,8 @@ namespace lithostress
   ReferenceSolutionSelector<dim>::create(ParameterHandler      &prm,
                                          const MaterialLibrary &materials,
                                          const PlaneState       state,
-                                         const double           scale)
+                                         const double           scale,
+                                         const GravityField    &gravity)
   {
     const std::string name = prm.get("Reference solution");
     std::unique_ptr<ReferenceSolution<dim>> solution;
@@ -405,6 +402,7 @@ namespace lithostress
       solution = std::make_unique<WilliamsCornerSolution<dim>>();
     else
       return solution;
+    solution->gravity = gravity;
     solution->parse_parameters(prm, materials, state, scale);
     return solution;
   }

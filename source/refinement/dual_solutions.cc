@@ -16,8 +16,8 @@ namespace lithostress
                       const FaultInterface<dim>  &faults,
                       SolverReport               &report)
   {
-    using InterfacePoint      = typename FaultInterface<dim>::InterfacePoint;
-    LinearSystem<dim> &system = problem.system;
+    using PointValues               = typename FaultInterface<dim>::PointValues;
+    LinearSystem<dim> &system       = problem.system;
     const MPI_Comm     communicator = problem.dof_handler.get_communicator();
     report                          = SolverReport();
     report.linear_solves            = 0;
@@ -38,22 +38,21 @@ namespace lithostress
     if (faults.frictional())
       {
         stuck.copy_from(system.matrix);
-        faults.assemble_interface(
+        typename FaultInterface<dim>::FaceTerms terms(problem.fe_space);
+        faults.for_each_interface_point(
           problem.dof_handler,
           problem.fe_space,
-          system.constraints,
           nullptr,
-          [&faults](const unsigned int,
-                    const InterfacePoint &p,
-                    const Tensor<1, dim> &w,
-                    Tensor<1, dim>       &t,
-                    Tensor<2, dim>       &D) {
-            D = faults.stuck_tangent(p);
-            t = D * w;
-          },
-          &stuck,
-          nullptr,
-          nullptr);
+          [&](const PointValues &values) {
+            terms.add_tangent(values, faults.stuck_tangent(values.point));
+            if (!values.last_of_pair)
+              return;
+            system.constraints.distribute_local_to_global(terms.matrix,
+                                                          values.dofs,
+                                                          stuck);
+            terms.clear();
+          });
+        stuck.compress(VectorOperation::add);
         control = std::make_unique<SolverControl>(1, 0);
         direct  = std::make_unique<TrilinosWrappers::SolverDirect>(*control);
         direct->initialize(stuck);

@@ -30,6 +30,233 @@ namespace lithostress
         return stress_model.stress(cell, unit, p, strain).in_plane;
       };
     }
+
+    /** Component @p c of the stress @p s in the order of the recovered
+     * stress field: the diagonal, then the shear components. */
+    template <int dim>
+    double
+    stress_component(const SymmetricTensor<2, dim> &s, const unsigned int c)
+    {
+      if (c < dim)
+        return s[c][c];
+      return (dim == 2) ? s[0][1]
+                        : (c == 3 ? s[0][1] : (c == 4 ? s[1][2] : s[0][2]));
+    }
+
+    /** The groups of cells whose stresses are averaged together: one per
+     * law (moduli and Maxwell time; materials of the same law share it)
+     * and displacement field. */
+    template <int dim>
+    struct AveragingGroups
+    {
+      /** The law of each material: its index among the distinct laws. */
+      std::map<types::material_id, unsigned int> law;
+      /** The group of each (law, field). */
+      std::map<std::pair<unsigned int, unsigned int>, unsigned int> group;
+      const FiniteElementSpace<dim>                                *fe_space;
+
+      /** The group of @p cell. */
+      template <typename CellIterator>
+      unsigned int
+      of(const CellIterator &cell) const
+      {
+        return group.at(
+          std::make_pair(law.at(cell->material_id()),
+                         fe_space->field_of(cell->active_fe_index())));
+      }
+
+      unsigned int
+      size() const
+      {
+        return group.size();
+      }
+    };
+
+    /** The averaging groups of the materials of @p tria (on all ranks). */
+    template <int dim>
+    AveragingGroups<dim>
+    averaging_groups(const Triangulation<dim>      &tria,
+                     const FiniteElementSpace<dim> &fe_space,
+                     const StressModel<dim>        &stress_model,
+                     const MPI_Comm                 comm)
+    {
+      std::vector<types::material_id> material_ids;
+      for (const auto &cell : tria.active_cell_iterators())
+        if (cell->is_locally_owned())
+          material_ids.push_back(cell->material_id());
+      material_ids = Utilities::MPI::compute_set_union(material_ids, comm);
+      AveragingGroups<dim> groups;
+      groups.fe_space = &fe_space;
+      for (const auto id : material_ids)
+        {
+          unsigned int same = groups.law.size();
+          for (const auto &[other, index] : groups.law)
+            if ((stress_model.moduli(id).stiffness() -
+                 stress_model.moduli(other).stiffness())
+                    .norm() <=
+                  1e-12 * stress_model.moduli(id).stiffness().norm() &&
+                stress_model.maxwell(id).maxwell_time() ==
+                  stress_model.maxwell(other).maxwell_time())
+              same = std::min(same, index);
+          groups.law.emplace(id, same);
+        }
+      for (const auto &[id, l] : groups.law)
+        for (unsigned int f = 0; f < fe_space.n_fields(); ++f)
+          groups.group.emplace(std::make_pair(l, f), groups.group.size());
+      return groups;
+    }
+
+    /** The recovered stress σ* of each averaging group, a continuous Q_p
+     * field on @p stress_dofs (ghosted): at each node the mean of the
+     * stresses (from @p stress_of) that the group's owned cells have
+     * there. Nodes no cell of the group touches keep 0; they are never read
+     * for a cell of that group. */
+    template <int dim>
+    std::vector<TrilinosWrappers::MPI::Vector>
+    recovered_stresses(const DoFHandler<dim>               &dof_handler,
+                       const DoFHandler<dim>               &stress_dofs,
+                       const FiniteElementSpace<dim>       &fe_space,
+                       const TrilinosWrappers::MPI::Vector &solution,
+                       const typename MeshRefinement<dim>::StressOf &stress_of,
+                       const AveragingGroups<dim>                   &groups)
+    {
+      const MPI_Comm            comm      = dof_handler.get_communicator();
+      const FiniteElement<dim> &stress_fe = stress_dofs.get_fe();
+      const IndexSet            owned     = stress_dofs.locally_owned_dofs();
+      IndexSet                  relevant;
+      DoFTools::extract_locally_relevant_dofs(stress_dofs, relevant);
+      std::vector<TrilinosWrappers::MPI::Vector> sum(groups.size()),
+        weight(groups.size());
+      for (unsigned int m = 0; m < groups.size(); ++m)
+        {
+          sum[m].reinit(owned, relevant, comm, true);
+          weight[m].reinit(owned, relevant, comm, true);
+        }
+      const Quadrature<dim> nodes(
+        stress_fe.base_element(0).get_unit_support_points());
+      hp::QCollection<dim> node_q;
+      for (unsigned int f = 0; f < fe_space.fe_collection().size(); ++f)
+        node_q.push_back(nodes);
+      hp::FEValues<dim>           at_nodes(fe_space.mapping_collection(),
+                                 fe_space.fe_collection(),
+                                 node_q,
+                                 update_gradients | update_quadrature_points);
+      std::vector<Tensor<2, dim>> grads;
+      std::vector<types::global_dof_index> stress_indices(
+        stress_fe.n_dofs_per_cell());
+      auto stress_cell = stress_dofs.begin_active();
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (cell->is_locally_owned())
+            {
+              at_nodes.reinit(cell);
+              const FEValues<dim> &fv = at_nodes.get_present_fe_values();
+              const auto           u  = fe_space.displacement(
+                fe_space.field_of(cell->active_fe_index()));
+              grads.resize(fv.n_quadrature_points);
+              fv[u].get_function_gradients(solution, grads);
+              stress_cell->get_dof_indices(stress_indices);
+              const unsigned int m = groups.of(cell);
+              for (unsigned int i = 0; i < stress_fe.n_dofs_per_cell(); ++i)
+                {
+                  const auto ci = stress_fe.system_to_component_index(i);
+                  const SymmetricTensor<2, dim> s =
+                    stress_of(cell,
+                              fv.get_quadrature().point(ci.second),
+                              fv.quadrature_point(ci.second),
+                              symmetrize(grads[ci.second]));
+                  sum[m](stress_indices[i]) += stress_component(s, ci.first);
+                  weight[m](stress_indices[i]) += 1.0;
+                }
+            }
+          ++stress_cell;
+        }
+      // No hanging-node constraints: a hanging node keeps the average of
+      // the cells that have it (a constraint would fill it from the coarse
+      // neighbour's nodes, which belong to another material's average
+      // where the coarse neighbour is of another material).
+      std::vector<TrilinosWrappers::MPI::Vector> recovered(groups.size());
+      for (unsigned int m = 0; m < groups.size(); ++m)
+        {
+          sum[m].compress(VectorOperation::add);
+          weight[m].compress(VectorOperation::add);
+          TrilinosWrappers::MPI::Vector average(owned, comm);
+          for (const auto i : owned)
+            if (weight[m](i) > 0)
+              average(i) = sum[m](i) / weight[m](i);
+          average.compress(VectorOperation::insert);
+          recovered[m].reinit(owned, relevant, comm);
+          recovered[m] = average;
+        }
+      return recovered;
+    }
+
+    /** η_K = ‖σ_h − σ*‖_{L2(K)} of every owned cell K (zero on the
+     * others), σ_h from @p stress_of and σ* the recovered stress of the
+     * cell's averaging group; shear components count twice (σ : σ). */
+    template <int dim>
+    Vector<float>
+    distances_from_recovered(
+      const DoFHandler<dim>                            &dof_handler,
+      const DoFHandler<dim>                            &stress_dofs,
+      const FiniteElementSpace<dim>                    &fe_space,
+      const TrilinosWrappers::MPI::Vector              &solution,
+      const typename MeshRefinement<dim>::StressOf     &stress_of,
+      const AveragingGroups<dim>                       &groups,
+      const std::vector<TrilinosWrappers::MPI::Vector> &recovered)
+    {
+      const unsigned int n_stress = dim * (dim + 1) / 2;
+      Vector<float>      eta(dof_handler.get_triangulation().n_active_cells());
+      hp::FEValues<dim>  hp_fe_values(fe_space.mapping_collection(),
+                                     fe_space.fe_collection(),
+                                     fe_space.cell_quadrature(),
+                                     update_gradients |
+                                       update_quadrature_points |
+                                       update_JxW_values);
+      const QGauss<dim>  quadrature(fe_space.degree() + 1);
+      FEValues<dim>      stress_values(fe_space.mapping(),
+                                  stress_dofs.get_fe(),
+                                  quadrature,
+                                  update_values);
+      std::vector<Vector<double>> s_star(quadrature.size(),
+                                         Vector<double>(n_stress));
+      std::vector<Tensor<2, dim>> grads;
+      auto                        stress_cell = stress_dofs.begin_active();
+      unsigned int                index       = 0;
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (cell->is_locally_owned())
+            {
+              hp_fe_values.reinit(cell);
+              const FEValues<dim> &fv = hp_fe_values.get_present_fe_values();
+              const auto           u  = fe_space.displacement(
+                fe_space.field_of(cell->active_fe_index()));
+              grads.resize(fv.n_quadrature_points);
+              fv[u].get_function_gradients(solution, grads);
+              stress_values.reinit(stress_cell);
+              stress_values.get_function_values(recovered[groups.of(cell)],
+                                                s_star);
+              double e2 = 0;
+              for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+                {
+                  const SymmetricTensor<2, dim> s =
+                    stress_of(cell,
+                              fv.get_quadrature().point(q),
+                              fv.quadrature_point(q),
+                              symmetrize(grads[q]));
+                  for (unsigned int c = 0; c < n_stress; ++c)
+                    {
+                      const double d = stress_component(s, c) - s_star[q](c);
+                      e2 += (c < dim ? 1.0 : 2.0) * d * d * fv.JxW(q);
+                    }
+                }
+              eta(index) = std::sqrt(e2);
+            }
+          ++stress_cell;
+          ++index;
+        }
+      return eta;
+    }
   } // namespace
 
   template <int dim>
@@ -202,8 +429,6 @@ namespace lithostress
     const TrilinosWrappers::MPI::Vector &solution,
     const StressOf                      &stress_of) const
   {
-    const auto   &tria = dof_handler.get_triangulation();
-    Vector<float> eta(tria.n_active_cells());
     // Zienkiewicz–Zhu: average the stress at the nodes of a continuous
     // Q_p field (each cell contributes its stress at the node), then
     // η_K = ‖σ_h − σ*‖_{L2(K)}. The average is taken per law: across an
@@ -215,168 +440,23 @@ namespace lithostress
     // rock, e.g. an upper and a lower crust that differ only in where they
     // are) share one average, so that a stress gradient across one cell
     // layer of each shows; the two sides of a fault (two fields) never do.
-    const MPI_Comm      comm     = dof_handler.get_communicator();
+    const auto         &tria     = dof_handler.get_triangulation();
     const unsigned int  n_stress = dim * (dim + 1) / 2;
     const FESystem<dim> stress_fe(FE_Q<dim>(fe_space.degree()), n_stress);
     DoFHandler<dim>     stress_dofs(tria);
     stress_dofs.distribute_dofs(stress_fe);
-    const IndexSet owned = stress_dofs.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(stress_dofs, relevant);
-
-    std::vector<types::material_id> material_ids;
-    for (const auto &cell : tria.active_cell_iterators())
-      if (cell->is_locally_owned())
-        material_ids.push_back(cell->material_id());
-    material_ids = Utilities::MPI::compute_set_union(material_ids, comm);
-    // The law of each material: its index among the distinct laws.
-    std::map<types::material_id, unsigned int> law;
-    for (const auto id : material_ids)
-      {
-        unsigned int same = law.size();
-        for (const auto &[other, index] : law)
-          if ((stress_model.moduli(id).stiffness() -
-               stress_model.moduli(other).stiffness())
-                  .norm() <=
-                1e-12 * stress_model.moduli(id).stiffness().norm() &&
-              stress_model.maxwell(id).maxwell_time() ==
-                stress_model.maxwell(other).maxwell_time())
-            same = std::min(same, index);
-        law.emplace(id, same);
-      }
-    // One average per law and field.
-    std::map<std::pair<unsigned int, unsigned int>, unsigned int> group;
-    for (const auto &[id, l] : law)
-      for (unsigned int f = 0; f < fe_space.n_fields(); ++f)
-        group.emplace(std::make_pair(l, f), group.size());
-    const auto slot_of = [&](const auto &cell) {
-      return group.at(
-        std::make_pair(law.at(cell->material_id()),
-                       fe_space.field_of(cell->active_fe_index())));
-    };
-    std::map<unsigned int, unsigned int> slot;
-    for (const auto &g : group)
-      slot.emplace(g.second, g.second);
-    std::vector<TrilinosWrappers::MPI::Vector> sum(slot.size()),
-      weight(slot.size());
-    for (unsigned int m = 0; m < slot.size(); ++m)
-      {
-        sum[m].reinit(owned, relevant, comm, true);
-        weight[m].reinit(owned, relevant, comm, true);
-      }
-
-    const Quadrature<dim> nodes(
-      stress_fe.base_element(0).get_unit_support_points());
-    hp::QCollection<dim> node_q;
-    for (unsigned int f = 0; f < fe_space.fe_collection().size(); ++f)
-      node_q.push_back(nodes);
-    hp::FEValues<dim> at_nodes(fe_space.mapping_collection(),
-                               fe_space.fe_collection(),
-                               node_q,
-                               update_gradients | update_quadrature_points);
-    auto              stress_component = [](const SymmetricTensor<2, dim> &s,
-                               const unsigned int             c) {
-      if (c < dim)
-        return s[c][c];
-      return (dim == 2) ? s[0][1]
-                                     : (c == 3 ? s[0][1] : (c == 4 ? s[1][2] : s[0][2]));
-    };
-    std::vector<Tensor<2, dim>>          grads;
-    std::vector<types::global_dof_index> stress_indices(
-      stress_fe.n_dofs_per_cell());
-    auto stress_cell = stress_dofs.begin_active();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_locally_owned())
-          {
-            at_nodes.reinit(cell);
-            const FEValues<dim> &fv = at_nodes.get_present_fe_values();
-            const auto           u =
-              fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
-            grads.resize(fv.n_quadrature_points);
-            fv[u].get_function_gradients(solution, grads);
-            stress_cell->get_dof_indices(stress_indices);
-            const unsigned int m = slot_of(cell);
-            for (unsigned int i = 0; i < stress_fe.n_dofs_per_cell(); ++i)
-              {
-                const auto ci = stress_fe.system_to_component_index(i);
-                const SymmetricTensor<2, dim> s =
-                  stress_of(cell,
-                            fv.get_quadrature().point(ci.second),
-                            fv.quadrature_point(ci.second),
-                            symmetrize(grads[ci.second]));
-                sum[m](stress_indices[i]) += stress_component(s, ci.first);
-                weight[m](stress_indices[i]) += 1.0;
-              }
-          }
-        ++stress_cell;
-      }
-    // No hanging-node constraints: a hanging node keeps the average of the
-    // cells that have it (a constraint would fill it from the coarse
-    // neighbour's nodes, which belong to another material's average where
-    // the coarse neighbour is of another material).
-    std::vector<TrilinosWrappers::MPI::Vector> recovered(slot.size());
-    for (unsigned int m = 0; m < slot.size(); ++m)
-      {
-        sum[m].compress(VectorOperation::add);
-        weight[m].compress(VectorOperation::add);
-        // Nodes no cell of material m touches keep 0; they are never read
-        // for a cell of material m.
-        TrilinosWrappers::MPI::Vector average(owned, comm);
-        for (const auto i : owned)
-          if (weight[m](i) > 0)
-            average(i) = sum[m](i) / weight[m](i);
-        average.compress(VectorOperation::insert);
-        recovered[m].reinit(owned, relevant, comm);
-        recovered[m] = average;
-      }
-
-    hp::FEValues<dim>           hp_fe_values(fe_space.mapping_collection(),
-                                   fe_space.fe_collection(),
-                                   fe_space.cell_quadrature(),
-                                   update_gradients | update_quadrature_points |
-                                     update_JxW_values);
-    const QGauss<dim>           quadrature(fe_space.degree() + 1);
-    FEValues<dim>               stress_values(fe_space.mapping(),
-                                stress_fe,
-                                quadrature,
-                                update_values);
-    std::vector<Vector<double>> s_star(quadrature.size(),
-                                       Vector<double>(n_stress));
-    stress_cell        = stress_dofs.begin_active();
-    unsigned int index = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_locally_owned())
-          {
-            hp_fe_values.reinit(cell);
-            const FEValues<dim> &fv = hp_fe_values.get_present_fe_values();
-            const auto           u =
-              fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
-            grads.resize(fv.n_quadrature_points);
-            fv[u].get_function_gradients(solution, grads);
-            stress_values.reinit(stress_cell);
-            stress_values.get_function_values(recovered[slot_of(cell)], s_star);
-            double e2 = 0;
-            for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
-              {
-                const SymmetricTensor<2, dim> s =
-                  stress_of(cell,
-                            fv.get_quadrature().point(q),
-                            fv.quadrature_point(q),
-                            symmetrize(grads[q]));
-                for (unsigned int c = 0; c < n_stress; ++c)
-                  {
-                    const double d = stress_component(s, c) - s_star[q](c);
-                    e2 += (c < dim ? 1.0 : 2.0) * d * d * fv.JxW(q);
-                  }
-              }
-            eta(index) = std::sqrt(e2);
-          }
-        ++stress_cell;
-        ++index;
-      }
-    return eta;
+    const AveragingGroups<dim> groups = averaging_groups(
+      tria, fe_space, stress_model, dof_handler.get_communicator());
+    const std::vector<TrilinosWrappers::MPI::Vector> recovered =
+      recovered_stresses(
+        dof_handler, stress_dofs, fe_space, solution, stress_of, groups);
+    return distances_from_recovered(dof_handler,
+                                    stress_dofs,
+                                    fe_space,
+                                    solution,
+                                    stress_of,
+                                    groups,
+                                    recovered);
   }
 
   template <int dim>

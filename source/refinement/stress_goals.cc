@@ -108,6 +108,190 @@ namespace lithostress
           }
       return polygon;
     }
+
+    /** Where a cell lies with respect to a goal's box. */
+    enum class BoxRelation
+    {
+      apart,
+      within,
+      cut
+    };
+
+    /** Where @p cell lies with respect to the box [@p lower, @p upper],
+     * judged by its vertices' bounding box widened by a tenth of the
+     * cell's diameter (for curved sides). */
+    template <int dim, typename CellIterator>
+    BoxRelation
+    relation_to_box(const CellIterator &cell,
+                    const Point<dim>   &lower,
+                    const Point<dim>   &upper)
+    {
+      Point<dim> lo = cell->vertex(0), hi = cell->vertex(0);
+      for (const unsigned int v : cell->vertex_indices())
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = std::min(lo[d], cell->vertex(v)[d]);
+            hi[d] = std::max(hi[d], cell->vertex(v)[d]);
+          }
+      const double margin = 0.1 * cell->diameter();
+      bool         apart = false, within = true;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          apart =
+            apart || hi[d] + margin < lower[d] || lo[d] - margin > upper[d];
+          within =
+            within && lo[d] - margin >= lower[d] && hi[d] + margin <= upper[d];
+        }
+      return apart ? BoxRelation::apart
+                   : (within ? BoxRelation::within : BoxRelation::cut);
+    }
+
+    /**
+     * The quadrature (on the unit cell) of the part of a cell inside a
+     * box that cuts it: the Gauss rule on the squares of a quadtree of the
+     * unit cell, refined (to 2^-7 of the cell) only where a square
+     * straddles the box's edges; each finest straddling square contributes
+     * one point, at the centroid of its image clipped to the box, with the
+     * clipped area. Exact up to those squares, about 1e-5 of the box's
+     * area, so that the goals' change between cycles is the solution's,
+     * not the quadrature's.
+     */
+    template <int dim, typename CellIterator>
+    class CutCellQuadrature
+    {
+    public:
+      CutCellQuadrature(const Mapping<dim>  &mapping,
+                        const CellIterator  &cell,
+                        const Point<dim>    &lower,
+                        const Point<dim>    &upper,
+                        const Quadrature<1> &gauss_1d)
+          : mapping(mapping)
+          , cell(cell)
+          , lower(lower)
+          , upper(upper)
+          , gauss_1d(gauss_1d)
+      {
+      }
+
+      /** The quadrature of the whole quadtree. */
+      Quadrature<dim>
+      build()
+      {
+        points.clear();
+        weights.clear();
+        add_square(Point<dim>(), 1.0, 0);
+        return Quadrature<dim>(points, weights);
+      }
+
+    private:
+      static constexpr unsigned int deepest = 7;
+
+      bool
+      in_box(const Point<dim> &p) const
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          if (p[d] < lower[d] || p[d] > upper[d])
+            return false;
+        return true;
+      }
+
+      /** The points of the square of side @p size at @p corner of the
+       * unit cell, @p depth levels down the quadtree: none if its image
+       * is apart from the box, the Gauss rule if it lies inside (from
+       * depth 2), one clipped point at the deepest level, else its four
+       * children's. */
+      void
+      add_square(const Point<dim>  &corner,
+                 const double       size,
+                 const unsigned int depth)
+      {
+        // The square's corners and centre in real space, and their
+        // bounding box widened by a tenth of its size (curved sides).
+        unsigned int inside = 0, tested = 0;
+        Point<dim>   lo, hi;
+        for (unsigned int i = 0; i <= 2; ++i)
+          for (unsigned int j = 0; j <= 2; ++j)
+            if ((i + j) % 2 == 0)
+              {
+                const Point<dim> p = mapping.transform_unit_to_real_cell(
+                  cell, corner + Point<dim>(i * size / 2, j * size / 2));
+                inside += in_box(p);
+                for (unsigned int d = 0; d < dim; ++d)
+                  {
+                    lo[d] = tested == 0 ? p[d] : std::min(lo[d], p[d]);
+                    hi[d] = tested == 0 ? p[d] : std::max(hi[d], p[d]);
+                  }
+                ++tested;
+              }
+        const double widen = 0.1 * lo.distance(hi);
+        bool         apart = false;
+        for (unsigned int d = 0; d < dim; ++d)
+          apart = apart || hi[d] + widen < lower[d] || lo[d] - widen > upper[d];
+        if (apart)
+          return;
+        if (depth >= 2 && inside == tested)
+          {
+            for (unsigned int i = 0; i < gauss_1d.size(); ++i)
+              for (unsigned int j = 0; j < gauss_1d.size(); ++j)
+                {
+                  points.push_back(corner +
+                                   Point<dim>(gauss_1d.point(i)[0] * size,
+                                              gauss_1d.point(j)[0] * size));
+                  weights.push_back(gauss_1d.weight(i) * gauss_1d.weight(j) *
+                                    size * size);
+                }
+            return;
+          }
+        if (depth == deepest)
+          {
+            add_clipped_square(corner, size);
+            return;
+          }
+        for (unsigned int i = 0; i < 2; ++i)
+          for (unsigned int j = 0; j < 2; ++j)
+            add_square(corner + Point<dim>(i * size / 2, j * size / 2),
+                       size / 2,
+                       depth + 1);
+      }
+
+      /** The finest straddling square at @p corner: its image, taken as
+       * the quadrilateral of its mapped corners, clipped to the box; one
+       * point at the clipped part's centroid with its area. */
+      void
+      add_clipped_square(const Point<dim> &corner, const double size)
+      {
+        std::vector<Point<dim>> corners;
+        for (const auto &c : {Point<dim>(0, 0),
+                              Point<dim>(1, 0),
+                              Point<dim>(1, 1),
+                              Point<dim>(0, 1)})
+          corners.push_back(
+            mapping.transform_unit_to_real_cell(cell, corner + size * c));
+        const double                  whole = polygon_area(corners);
+        const std::vector<Point<dim>> part = clip_to_box(corners, lower, upper);
+        const double                  area = polygon_area(part);
+        if (area <= 0 || whole <= 0)
+          return;
+        // The centroid in unit coordinates, through the affine map of the
+        // square's first three corners.
+        const Point<dim>     c  = polygon_centroid(part);
+        const Tensor<1, dim> e0 = corners[1] - corners[0],
+                             e1 = corners[3] - corners[0], r = c - corners[0];
+        const double det = e0[0] * e1[1] - e0[1] * e1[0];
+        const double u   = (r[0] * e1[1] - r[1] * e1[0]) / det,
+                     v   = (e0[0] * r[1] - e0[1] * r[0]) / det;
+        points.push_back(corner + Point<dim>(size * std::clamp(u, 0.0, 1.0),
+                                             size * std::clamp(v, 0.0, 1.0)));
+        weights.push_back(size * size * area / whole);
+      }
+
+      const Mapping<dim>     &mapping;
+      const CellIterator     &cell;
+      const Point<dim>       &lower, &upper;
+      const Quadrature<1>    &gauss_1d;
+      std::vector<Point<dim>> points;
+      std::vector<double>     weights;
+    };
   } // namespace
 
   template <int dim>
@@ -255,140 +439,26 @@ namespace lithostress
     const UpdateFlags flags = update_gradients | update_values |
                               update_quadrature_points | update_JxW_values;
     // Cells inside the box: the usual Gauss rule. Cells the box cuts: the
-    // rule on the squares of a quadtree of the unit cell, refined (to 2^-7
-    // of the cell) only where a square straddles the box's edges, the
-    // points of the finest straddling squares counted if inside: exact up
-    // to those squares, about 1e-5 of the box's area (so that the goals'
-    // change between cycles is the solution's, not the quadrature's).
+    // quadtree rule of CutCellQuadrature, kept until the mesh changes.
     const QGauss<dim>    gauss(fe_space.degree() + 1);
     const QGauss<1>      gauss_1d(fe_space.degree() + 1);
     hp::QCollection<dim> whole;
     for (unsigned int f = 0; f < fe_space.fe_collection().size(); ++f)
       whole.push_back(gauss);
-    hp::FEValues<dim> inside_values(fe_space.mapping_collection(),
+    hp::FEValues<dim>   inside_values(fe_space.mapping_collection(),
                                     fe_space.fe_collection(),
                                     whole,
                                     flags);
-    const auto        in_box = [&](const Point<dim> &p) {
-      for (unsigned int d = 0; d < dim; ++d)
-        if (p[d] < goal.lower[d] || p[d] > goal.upper[d])
-          return false;
-      return true;
-    };
-    const unsigned int      deepest = 7;
-    std::vector<Point<dim>> points;
-    std::vector<double>     weights;
-    const Mapping<dim>     &mapping = fe_space.mapping();
-    std::function<void(const typename DoFHandler<dim>::active_cell_iterator &,
-                       const Point<dim> &,
-                       const double,
-                       const unsigned int)>
-      square = [&](const auto        &cell,
-                   const Point<dim>  &corner,
-                   const double       size,
-                   const unsigned int depth) {
-        // The square's corners and centre in real space, and their
-        // bounding box widened by a tenth of its size (curved sides).
-        unsigned int inside = 0, tested = 0;
-        Point<dim>   lo, hi;
-        for (unsigned int i = 0; i <= 2; ++i)
-          for (unsigned int j = 0; j <= 2; ++j)
-            if ((i + j) % 2 == 0)
-              {
-                const Point<dim> p = mapping.transform_unit_to_real_cell(
-                  cell, corner + Point<dim>(i * size / 2, j * size / 2));
-                inside += in_box(p);
-                for (unsigned int d = 0; d < dim; ++d)
-                  {
-                    lo[d] = tested == 0 ? p[d] : std::min(lo[d], p[d]);
-                    hi[d] = tested == 0 ? p[d] : std::max(hi[d], p[d]);
-                  }
-                ++tested;
-              }
-        const double widen = 0.1 * lo.distance(hi);
-        bool         apart = false;
-        for (unsigned int d = 0; d < dim; ++d)
-          apart = apart || hi[d] + widen < goal.lower[d] ||
-                  lo[d] - widen > goal.upper[d];
-        if (apart)
-          return;
-        if (depth >= 2 && inside == tested)
-          {
-            for (unsigned int i = 0; i < gauss_1d.size(); ++i)
-              for (unsigned int j = 0; j < gauss_1d.size(); ++j)
-                {
-                  points.push_back(corner +
-                                   Point<dim>(gauss_1d.point(i)[0] * size,
-                                              gauss_1d.point(j)[0] * size));
-                  weights.push_back(gauss_1d.weight(i) * gauss_1d.weight(j) *
-                                    size * size);
-                }
-            return;
-          }
-        if (depth == deepest)
-          {
-            // The finest straddling square: its image, taken as the
-            // quadrilateral of its mapped corners, clipped to the box; one
-            // point at the clipped part's centroid with its area.
-            std::vector<Point<dim>> corners;
-            for (const auto &c : {Point<dim>(0, 0),
-                                  Point<dim>(1, 0),
-                                  Point<dim>(1, 1),
-                                  Point<dim>(0, 1)})
-              corners.push_back(
-                mapping.transform_unit_to_real_cell(cell, corner + size * c));
-            const double                  whole = polygon_area(corners);
-            const std::vector<Point<dim>> part =
-              clip_to_box(corners, goal.lower, goal.upper);
-            const double area = polygon_area(part);
-            if (area <= 0 || whole <= 0)
-              return;
-            // The centroid in unit coordinates, through the affine map of
-            // the square's first three corners.
-            const Point<dim>     c  = polygon_centroid(part);
-            const Tensor<1, dim> e0 = corners[1] - corners[0],
-                                 e1 = corners[3] - corners[0],
-                                 r  = c - corners[0];
-            const double det        = e0[0] * e1[1] - e0[1] * e1[0];
-            const double u          = (r[0] * e1[1] - r[1] * e1[0]) / det,
-                         v          = (e0[0] * r[1] - e0[1] * r[0]) / det;
-            points.push_back(corner +
-                             Point<dim>(size * std::clamp(u, 0.0, 1.0),
-                                        size * std::clamp(v, 0.0, 1.0)));
-            weights.push_back(size * size * area / whole);
-            return;
-          }
-        for (unsigned int i = 0; i < 2; ++i)
-          for (unsigned int j = 0; j < 2; ++j)
-            square(cell,
-                   corner + Point<dim>(i * size / 2, j * size / 2),
-                   size / 2,
-                   depth + 1);
-      };
+    const Mapping<dim> &mapping = fe_space.mapping();
+    using CellIterator = typename DoFHandler<dim>::active_cell_iterator;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          // The vertices' bounding box, widened by a tenth of the cell's
-          // diameter for curved sides.
-          Point<dim> lo = cell->vertex(0), hi = cell->vertex(0);
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                lo[d] = std::min(lo[d], cell->vertex(v)[d]);
-                hi[d] = std::max(hi[d], cell->vertex(v)[d]);
-              }
-          const double margin = 0.1 * cell->diameter();
-          bool         apart = false, within = true;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              apart = apart || hi[d] + margin < goal.lower[d] ||
-                      lo[d] - margin > goal.upper[d];
-              within = within && lo[d] - margin >= goal.lower[d] &&
-                       hi[d] + margin <= goal.upper[d];
-            }
-          if (apart)
+          const BoxRelation relation =
+            relation_to_box(cell, goal.lower, goal.upper);
+          if (relation == BoxRelation::apart)
             continue;
-          if (within)
+          if (relation == BoxRelation::within)
             {
               inside_values.reinit(cell);
               const FEValues<dim> &fv = inside_values.get_present_fe_values();
@@ -396,17 +466,15 @@ namespace lithostress
                 integrand(cell, fv, q);
               continue;
             }
-          // The cut cell's quadrature, kept until the mesh changes.
           auto cached = cut_cells[k].find(cell->id());
           if (cached == cut_cells[k].end())
-            {
-              points.clear();
-              weights.clear();
-              square(cell, Point<dim>(), 1.0, 0);
-              cached = cut_cells[k]
-                         .emplace(cell->id(), Quadrature<dim>(points, weights))
-                         .first;
-            }
+            cached =
+              cut_cells[k]
+                .emplace(cell->id(),
+                         CutCellQuadrature<dim, CellIterator>(
+                           mapping, cell, goal.lower, goal.upper, gauss_1d)
+                           .build())
+                .first;
           if (cached->second.size() == 0)
             continue;
           FEValues<dim> fv(mapping,

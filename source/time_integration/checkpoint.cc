@@ -1,8 +1,15 @@
 #include <deal.II/base/mpi.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/output/output_file.h>
+#include <lithostress/base/output_file.h>
 #include <lithostress/time_integration/checkpoint.h>
+
+#include <boost/archive/archive_exception.hpp>
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 
 #include <filesystem>
 #include <fstream>
@@ -51,6 +58,53 @@ namespace lithostress
           model << trimmed << '\n';
       }
     return model.str();
+  }
+
+  namespace
+  {
+    /** The first line of state.txt: the format of what follows. */
+    const std::string state_format = "lithostress-checkpoint 3";
+  } // namespace
+
+  void
+  Checkpoint::write_state(const std::string &directory,
+                          const LoopState   &state,
+                          const std::string &model_text)
+  {
+    std::ostringstream text;
+    text << state_format << '\n';
+    {
+      // Doubles are written with all digits: they are read back exactly.
+      boost::archive::text_oarchive archive(text);
+      archive << state;
+    }
+    write_file_atomically(directory + "/state.txt", text.str(), false);
+    write_file_atomically(directory + "/model.prm", model_text, false);
+  }
+
+  LoopState
+  Checkpoint::read_state(const std::string &directory)
+  {
+    const std::string file = directory + "/state.txt";
+    std::ifstream     in(file);
+    std::string       first;
+    std::getline(in, first);
+    if (first != state_format)
+      throw ComputationError("the checkpoint " + file + " has format <" +
+                             first + ">; this lithostress reads <" +
+                             state_format + "> (start the run anew)");
+    LoopState state;
+    try
+      {
+        boost::archive::text_iarchive archive(in);
+        archive >> state;
+      }
+    catch (const boost::archive::archive_exception &e)
+      {
+        throw ComputationError("the checkpoint " + file +
+                               " is damaged (" + e.what() + ")");
+      }
+    return state;
   }
 
   std::string

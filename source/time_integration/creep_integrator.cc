@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/discretization/elastic_assembler.h>
+#include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/time_integration/creep_integrator.h>
 
 namespace lithostress
@@ -137,18 +137,20 @@ namespace lithostress
                                    creep,
                                    -w * w / (1 + 2 * w),
                                    previous);
-        return (1 + w) / (1 + 2 * w);
+        step_weight = (1 + w) / (1 + 2 * w);
+        return step_weight;
       }
     if (scheme == TimeStepping::Scheme::thesis)
       {
         // The thesis's predictor c_n + Δt ċ_n.
         history.set_to_sum(creep, dt, start_rate);
-        return 0;
+        step_weight = 0;
+        return step_weight;
       }
     // c* = c_n + (1 − θ) Δt ċ_n; BDF2 starts with a trapezoidal step.
-    const double weight = scheme == TimeStepping::Scheme::bdf2 ? 0.5 : theta;
-    history.set_to_sum(creep, (1 - weight) * dt, start_rate);
-    return weight;
+    step_weight = scheme == TimeStepping::Scheme::bdf2 ? 0.5 : theta;
+    history.set_to_sum(creep, (1 - step_weight) * dt, start_rate);
+    return step_weight;
   }
 
   template <int dim>
@@ -159,7 +161,7 @@ namespace lithostress
     const StressModel<dim>              &stress_model,
     const TrilinosWrappers::MPI::Vector &solution)
   {
-    const double                theta = stress_model.time_step().second;
+    const double                theta = step_weight;
     Increment                   increment;
     std::vector<Vector<double>> c, h, rate;
     for_each_viscous_cell(

@@ -24,7 +24,7 @@ namespace lithostress
     prm.declare_entry("Enabled",
                       "false",
                       Patterns::Bool(),
-                      "Run the visco-elastic time loop (SPEC §3.3): the "
+                      "Run the visco-elastic time loop (thesis §3.9): the "
                       "elastic response at t = 0, then Maxwell creep of every "
                       "material with a viscosity to the end time. false = one "
                       "elastic solve per refinement cycle.");

@@ -1,4 +1,4 @@
-"""Plate flexure (thesis §6.1.2, SPEC §4): the default experiment against
+"""Plate flexure (thesis §6.1.2): the default experiment against
 thin-plate theory, computed here from the model's own inputs.
 
 The plate's parameters are read from the parameters.prm the run writes (the
@@ -86,7 +86,7 @@ parts = [p.strip() for p in prm["Loads/Isostatic restoring force/Boundary parts"
 densities = [float(v) for v in prm["Loads/Isostatic restoring force/Fluid densities"].split(",")]
 check(parts == ["base"], "the fluid foundation acts on the base only")
 rho_f = densities[0]
-g = float(prm["Loads/Isostatic restoring force/Gravity"])
+g = float(prm["Gravity field/Acceleration"])
 load_points = numbers(prm["Loads/Line forces/Points"])
 load_forces = numbers(prm["Loads/Line forces/Forces"])
 check(len(load_points) == 1 and load_forces[0][0] == 0 and load_forces[0][1] < 0,

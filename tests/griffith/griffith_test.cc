@@ -1,4 +1,4 @@
-// Unit test of the modified Griffith failure criterion (SPEC §3.6,
+// Unit test of the modified Griffith failure criterion (thesis §2.5.1,
 // doc/griffith.md): continuity of the failure envelope at every regime
 // boundary, hand-computed stress states, FAIL's algebraic forms, and the
 // rejection of parameters that make the envelope discontinuous. Prints one
@@ -91,7 +91,8 @@ namespace
                              ", mu_F = " + str(friction) + ", T = " + str(T);
     const GriffithFailure griffith = make(ratio, friction);
 
-    // The boundaries, by hand (SPEC §3.6): −T, σc − 2T, σc − 2μF√(T² − Tσc).
+    // The boundaries, by hand (doc/griffith.md): −T, σc − 2T,
+    // σc − 2μF√(T² − Tσc).
     const double sigma_c    = ratio * T;
     const double root       = std::sqrt(T * T - T * sigma_c);
     const double b[3]       = {-T,

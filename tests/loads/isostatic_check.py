@@ -1,4 +1,4 @@
-"""Isostatic restoring force (issue 4, verification 2; SPEC §3.2).
+"""Isostatic restoring force (issue 4, verification 2; thesis §3.7.2.3).
 
 Flat base: a block under a uniform top pressure p on a fluid base, sides on
 vertical rollers, is in uniaxial strain; Q2 represents the exact solution

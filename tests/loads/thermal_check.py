@@ -1,4 +1,4 @@
-"""Thermal strain (issue 4, verification 4; thesis §3.8, SPEC §3.2).
+"""Thermal strain (issue 4, verification 4; thesis §3.8).
 
 A uniform temperature change dT with linear coefficient alpha gives the
 initial strain alpha dT in every direction. The exact solutions are linear

@@ -92,6 +92,8 @@ expected = {
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",
     "gmsh_missing_node": "gmsh_missing_node.msh>: While creating cell 11 (which is numbered as 12 in the input file), you are referencing a vertex with index 19",
+    "gmsh_inverted_cell": "gmsh_inverted_cell.msh>: element 10 is inverted or degenerate (Jacobian <= 0 at a quadrature point); vertices (6, -10), (4, -10), (4, 0), (6, 0) km",
+    "gmsh_degenerate_cell": "gmsh_degenerate_cell.msh>: element 10 is inverted or degenerate (Jacobian <= 0 at a quadrature point); vertices (4, -10), (4, -10), (4, 0), (4, 0) km",
     "override_without_value": "Mesh refinement/Number of cycles",
     "override_empty_value": "Number of cycles",
 }

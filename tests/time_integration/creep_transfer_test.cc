@@ -18,7 +18,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 
-#include <lithostress/time_integration/creep_strain.h>
+#include <lithostress/materials/creep_strain.h>
 
 #include <cmath>
 #include <iostream>

@@ -21,8 +21,8 @@ values. What bounds the error:
   measured 4.9).
 The thesis's initial-strain scheme on the same mesh converges to the
 trapezoidal rule, and the printed thesis curves (with the sign of the 0.1583
-term corrected, SPEC §4) lie within 4e-3 p of the exact ones (the thesis
-modelled the shell as a ring).
+term corrected, doc/viscoelastic_cylinder_derivation.md) lie within 4e-3 p
+of the exact ones (the thesis modelled the shell as a ring).
 """
 import os
 import sys

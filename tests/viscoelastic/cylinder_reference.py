@@ -1,5 +1,6 @@
 """Exact reference solution for the visco-elastic cylinder of the thesis, §4.5
-(Lee, Radok & Woodward 1959), for the model as specified in SPEC §3.3 / §4.
+(Lee, Radok & Woodward 1959), for the model as the thesis specifies it
+(§4.5.2 and table 4.2; the Maxwell law of §2.6 and §3.9).
 
 Model (plane strain, small strain, quasi-static, axisymmetric):
 
@@ -64,7 +65,8 @@ stress is q b/h.
 Time t is physical (the time unit of eta); the thesis measures t in units of
 tau = eta/G (tau = 0.999975 for nu = 0.3333, exactly 1 for nu = 1/3).
 
-Thesis curves (§4.5.2, sign of the 0.1583 term corrected as in SPEC §4):
+Thesis curves (§4.5.2, sign of the 0.1583 term corrected: the printed
+-0.1583 violates sigma_r(a) = -p, i.e. f + (b/a)^2 g = 1):
 f(t) = 1 - 0.005363 e^{-0.9849 t} - 0.6331 e^{-0.3528 t},
 g(t) = 0.001341 e^{-0.9849 t} + 0.1583 e^{-0.3528 t}.
 They are reproduced to all printed digits by the "ring" variant with
@@ -86,7 +88,7 @@ DEFAULTS = dict(a=2.0, b=4.0, h=4.0 / 33.0, E=1e5, nu=0.3333, eta=0.375e5,
 VARIANTS = ("ring", "shell")
 THESIS_RATES = (0.9849, 0.3528)          # per unit of tau = eta/G
 THESIS_F = (1.0, -0.005363, -0.6331)     # f = F0 + F1 e^{-r1 t} + F2 e^{-r2 t}
-THESIS_G = (0.0, 0.001341, 0.1583)       # corrected sign of 0.1583 (SPEC §4)
+THESIS_G = (0.0, 0.001341, 0.1583)       # corrected sign of 0.1583 (see above)
 THESIS_G_PRINTED = (0.0, 0.001341, -0.1583)
 
 

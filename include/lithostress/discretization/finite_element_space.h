@@ -20,7 +20,7 @@ namespace lithostress
    * FESystem(FE_Q(p), dim). A faulted model (next issues) has two fields on
    * the two sides of the fault, element f being FE_Q(p)^dim in field f and
    * FE_Nothing^dim in the other (the step-46 idea, see
-   * DEALII-9.4.1-NOTES.md), so that assembly, the near-null space and
+   * doc/dealii_facts.md), so that assembly, the near-null space and
    * output all go through the field of a cell's active FE index.
    *
    * Also holds the mapping of degree `Mapping degree` (2 by default), used

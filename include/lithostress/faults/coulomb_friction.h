@@ -26,7 +26,7 @@ namespace lithostress
 
   /**
    * Coulomb friction on a fault as an elastic–perfectly-plastic interface
-   * law (SPEC §3.5, thesis §5.5 and FSHEAR), in the fault's local frame:
+   * law (thesis §5.5 and FSHEAR), in the fault's local frame:
    * w = (w_s, w_n) the jump u(hanging wall) − u(footwall) along the shear
    * direction s and the normal n (from the footwall into the hanging wall),
    * p the accumulated (plastic) slip, a history variable. The model's

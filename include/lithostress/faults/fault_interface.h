@@ -5,10 +5,12 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
+#include <lithostress/base/gravity_field.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/faults/coulomb_friction.h>
 #include <lithostress/faults/fault_trace.h>
@@ -24,11 +26,11 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The faults of a model (SPEC §3.4, thesis chapter 5) as interfaces
-   * between two displacement fields (FiniteElementSpace with two fields,
-   * FE_Nothing on the other side; DEALII-9.4.1-NOTES.md), so the
-   * displacement may jump across the faults' faces, and each fault's
-   * interface law ties its two sides together.
+   * The faults of a model (thesis chapter 5) as interfaces between two
+   * displacement fields (FiniteElementSpace with two fields, FE_Nothing on
+   * the other side; doc/faults.md), so the displacement may jump across
+   * the faults' faces, and each fault's interface law ties its two sides
+   * together.
    *
    * Several faults: identify() finds each fault's faces on the coarse mesh,
    * cuts the body along them into blocks and gives neighbouring blocks
@@ -59,7 +61,13 @@ namespace lithostress
    * u⁺ = u⁻ + w at the node.
    * `frictional`: the elastic law with Coulomb sliding (CoulombFriction),
    * a nonlinear law solved by FrictionalSlidingSolver through
-   * assemble_interface().
+   * for_each_interface_point().
+   *
+   * The members are defined by concern: parameters and queries in
+   * fault_interface.cc, the topology (identification, two-colouring, FE
+   * indices, face pairs, cliques) in fault_topology.cc, the constraints in
+   * fault_constraints.cc, and the interface quadrature with its face terms
+   * in fault_assembly.cc.
    */
   template <int dim>
   class FaultInterface
@@ -90,17 +98,76 @@ namespace lithostress
     };
 
     /**
-     * An interface law at the point number @p index of this rank (in the
-     * order of interface_quadrature()): for the jump @p jump = u(hanging
-     * wall) − u(footwall) it sets the traction @p traction = σ n on the
-     * footwall's face and its derivative @p tangent = ∂t/∂w, in the
-     * (x, y) frame.
+     * What for_each_interface_point() shows its visitor at an interface
+     * point (thesis chapter 5: the fault's two nodes at a point, here the
+     * two fields' traces), valid during the call: the point, the jump of
+     * the solution there, and the face pair's DoFs with the jump of each
+     * one's shape function, which is all a law's face terms need.
      */
-    using PointLaw = std::function<void(const unsigned int    index,
-                                        const InterfacePoint &point,
-                                        const Tensor<1, dim> &jump,
-                                        Tensor<1, dim>       &traction,
-                                        Tensor<2, dim>       &tangent)>;
+    struct PointValues
+    {
+      /** The point's number on this rank (the order of
+       * interface_quadrature(); FaultSlipHistory's index). */
+      unsigned int index;
+      /** The point, its fault and the fault's frame there. */
+      const InterfacePoint &point;
+      /** w = u(hanging wall) − u(footwall) of the solution (zero without
+       * one). */
+      const Tensor<1, dim> &jump;
+      /** The face pair's DoFs: the field-0 cell's, then the field-1
+       * cell's. */
+      const std::vector<types::global_dof_index> &dofs;
+      /** [φ_i] = φ_i(hanging wall) − φ_i(footwall) at the point, for each
+       * of those DoFs. */
+      const std::vector<Tensor<1, dim>> &shape_jumps;
+      /** Whether this is the face pair's last point: what a visitor summed
+       * over the pair's points is complete and can be added to global
+       * objects. */
+      bool last_of_pair;
+    };
+
+    /** A visitor of the interface points (for_each_interface_point()). */
+    using PointVisitor = std::function<void(const PointValues &values)>;
+
+    /**
+     * The face terms of an interface law on one face pair, summed over its
+     * points by an assembling visitor (thesis chapter 5's fault element
+     * stiffness and forces, here integrated over the finer side's face):
+     * at the pair's last point the visitor adds them through the
+     * constraints to its global matrix or vectors (with
+     * PointValues::dofs) and clears them. The linearisation of a law at
+     * the jump w, t(w') ≈ t + D (w' − w) = D w' + c, makes the tangent
+     * ∫ [v]·D [u] ds, the affine part −∫ [v]·c ds on the right-hand side
+     * and the internal force ∫ [v]·t ds.
+     */
+    class FaceTerms
+    {
+    public:
+      /** Zero terms for the face pairs of @p fe_space's two fields. */
+      explicit FaceTerms(const FiniteElementSpace<dim> &fe_space);
+
+      /** matrix(i, j) += [φ_i]·D [φ_j] JxW at the point @p values with
+       * the law's tangent @p tangent = D. */
+      void
+      add_tangent(const PointValues &values, const Tensor<2, dim> &tangent);
+
+      /** rhs(i) −= [φ_i]·c JxW at the point @p values with the affine
+       * part @p affine = c = t − D w of the law's linearisation. */
+      void
+      add_affine(const PointValues &values, const Tensor<1, dim> &affine);
+
+      /** force(i) += [φ_i]·t JxW at the point @p values with the law's
+       * traction @p traction = t. */
+      void
+      add_traction(const PointValues &values, const Tensor<1, dim> &traction);
+
+      /** Zero the terms, for the next face pair. */
+      void
+      clear();
+
+      FullMatrix<double> matrix;
+      Vector<double>     rhs, force;
+    };
 
     /** Declare `Faults` with a subsection per name of `Faults/Names` in
      * @p first_pass. */
@@ -109,11 +176,13 @@ namespace lithostress
 
     /** Read the section for the faults @p traces of the geometry: each must
      * be named in `Faults/Names`, and each name must be a fault of the
-     * geometry; lengths are in units of @p length_scale metres. Throws
-     * InputError naming the entry. */
+     * geometry; lengths are in units of @p length_scale metres; the
+     * frictional law's lithostatic and pore pressures take g from the
+     * model's @p gravity. Throws InputError naming the entry. */
     void
     parse_parameters(ParameterHandler              &prm,
                      const std::vector<FaultTrace> &traces,
+                     const GravityField            &gravity,
                      const double                   length_scale);
 
     /** Find each fault's faces on the coarse mesh of @p triangulation
@@ -215,7 +284,8 @@ namespace lithostress
 
     /** Add the face terms of elastic faults to @p matrix (if given;
      * compressed again afterwards) and what prescribed displacements on
-     * their DoFs contribute through them to @p rhs, via @p constraints. */
+     * their DoFs contribute through them to @p rhs, via @p constraints
+     * (thesis chapter 5's fault element springs, per unit area). */
     void
     assemble(const DoFHandler<dim>           &dof_handler,
              const FiniteElementSpace<dim>   &fe_space,
@@ -224,28 +294,25 @@ namespace lithostress
              TrilinosWrappers::MPI::Vector   &rhs) const;
 
     /**
-     * The interface law @p law at every interface point, for the jump of
-     * @p solution (ghosted; nullptr = zero jump), added through
-     * @p constraints to whichever of these is given: @p matrix gets
-     * ∫ [v]·D [u] ds; @p rhs gets −∫ [v]·(t − D w) ds, so that the
-     * law's linearisation at w, t(w') ≈ t + D (w' − w), is an affine law
-     * of the next solution (with the inhomogeneities of @p constraints);
-     * @p force gets ∫ [v]·t ds, the interface's internal force
-     * (condensed, without inhomogeneities). [v] = v⁺ − v⁻. Compresses
-     * what it adds to.
+     * Call @p visitor at every interface point of this rank, in the order
+     * of interface_quadrature(), face pair by face pair, with the jump of
+     * @p solution (ghosted; nullptr = zero jump) there: the one loop over
+     * the faults' faces that assembles their terms (with FaceTerms),
+     * evaluates their tractions and samples them (thesis chapter 5 and
+     * §5.5's FSHEAR, which visits the fault's node pairs likewise). The
+     * points are the Gauss-Lobatto points of the finer side's face of
+     * each face pair with face terms whose field-0 cell is locally owned,
+     * in the fault's exact frame.
      */
     void
-    assemble_interface(const DoFHandler<dim>               &dof_handler,
-                       const FiniteElementSpace<dim>       &fe_space,
-                       const AffineConstraints<double>     &constraints,
-                       const TrilinosWrappers::MPI::Vector *solution,
-                       const PointLaw                      &law,
-                       TrilinosWrappers::SparseMatrix      *matrix,
-                       TrilinosWrappers::MPI::Vector       *rhs,
-                       TrilinosWrappers::MPI::Vector       *force) const;
+    for_each_interface_point(const DoFHandler<dim>               &dof_handler,
+                             const FiniteElementSpace<dim>       &fe_space,
+                             const TrilinosWrappers::MPI::Vector *solution,
+                             const PointVisitor &visitor) const;
 
     /** This rank's interface points, in the order in which
-     * assemble_interface() numbers them. */
+     * for_each_interface_point() numbers them (FaultSlipHistory's
+     * points; thesis §5.5). */
     std::vector<InterfacePoint>
     interface_quadrature(const DoFHandler<dim>         &dof_handler,
                          const FiniteElementSpace<dim> &fe_space) const;
@@ -263,21 +330,31 @@ namespace lithostress
       std::shared_ptr<FunctionParser<1>> slip, opening;
     };
 
-    /** Call @p pair(fault, minus cell, face, subface, plus cell, plus
-     * face, subface; the subface of the coarser side or invalid) for every
-     * face pair of a fault with face terms whose field-0 ("minus") cell is
-     * locally owned; the finer side's face is the one integrated over. */
+    /** What for_each_face_pair() calls per face pair: (fault, minus cell,
+     * face, subface, plus cell, plus face, subface; the subface of the
+     * coarser side or invalid). */
+    using FacePairVisitor = std::function<
+      void(const unsigned int                                    fault,
+           const typename DoFHandler<dim>::active_cell_iterator &minus,
+           const unsigned int                                    minus_face,
+           const unsigned int                                    minus_subface,
+           const typename DoFHandler<dim>::active_cell_iterator &plus,
+           const unsigned int                                    plus_face,
+           const unsigned int                                    plus_subface)>;
+
+    /** Call @p pair for every face pair of a fault with face terms whose
+     * field-0 ("minus") cell is locally owned; the finer side's face is
+     * the one integrated over. */
     void
-    for_each_face_pair(
-      const DoFHandler<dim> &dof_handler,
-      const std::function<
-        void(const unsigned int                                    fault,
-             const typename DoFHandler<dim>::active_cell_iterator &minus,
-             const unsigned int                                    minus_face,
-             const unsigned int minus_subface,
-             const typename DoFHandler<dim>::active_cell_iterator &plus,
-             const unsigned int                                    plus_face,
-             const unsigned int plus_subface)> &pair) const;
+    for_each_face_pair(const DoFHandler<dim> &dof_handler,
+                       const FacePairVisitor &pair) const;
+
+    /** The interface point of fault @p fault at @p position with the
+     * weight @p JxW: the fault's exact frame, depth and distance there. */
+    InterfacePoint
+    interface_point(const unsigned int fault,
+                    const Point<dim>  &position,
+                    const double       JxW) const;
 
     /** The coarse cell (level 0) that @p cell descends from. */
     template <class Iterator>

@@ -12,7 +12,7 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The trace of a fault in the cross section (SPEC §3.4, thesis §6.1–6.3):
+   * The trace of a fault in the cross section (thesis §6.1–6.3, §7.2):
    * a curve from the top surface through the whole model that separates
    * it into a footwall and a hanging wall, and is a graph x_f(y). It is
    * planar — through the surface point (x_s, y_top), dipping at the angle

@@ -17,7 +17,7 @@ namespace lithostress
 
   /**
    * Solves the elasticity problem of a model whose fault slides by Coulomb
-   * friction (SPEC §3.5): the bulk is linear, the fault's law
+   * friction (thesis §5.5): the bulk is linear, the fault's law
    * (CoulombFriction) is piecewise linear in the jump, so its
    * linearisation at an iterate is an affine law per interface point.
    *
@@ -42,17 +42,25 @@ namespace lithostress
    * the friction limit is removed by equal and opposite forces on the two
    * sides, times the convergence factor, accumulated in the slip p, re-solved
    * until the excess shear is below its tolerance. Kept for comparison.
+   *
+   * solve() sets up the context both methods share (the problem, the
+   * faults, the slip history, the iterate, the report and the log) and
+   * runs one of them; both are in frictional_sliding_solver.cc.
    */
   template <int dim>
   class FrictionalSlidingSolver
   {
   public:
+    /** The sliding iteration: semi-smooth Newton, or the thesis's (§5.5,
+     * FSHEAR). */
     enum class Method
     {
       newton,
       thesis
     };
 
+    /** The `Faults/Sliding solver` entries (thesis §5.5's convergence
+     * factor among them). */
     struct Settings
     {
       Method       method                 = Method::newton;
@@ -66,12 +74,17 @@ namespace lithostress
       bool direct_solver = false;
     };
 
+    /** Declare `Faults/Sliding solver`: the method, its tolerances and
+     * the linear solver of each step (thesis §5.5). */
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /** Read `Faults/Sliding solver`; throws InputError for a convergence
+     * factor that is not positive. */
     void
     parse_parameters(ParameterHandler &prm);
 
+    /** The settings read by parse_parameters(). */
     const Settings &
     settings() const
     {

@@ -5,6 +5,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace lithostress
@@ -96,9 +97,16 @@ namespace lithostress
                  const types::material_id material);
 
     /** Create the coarse mesh in the empty @p triangulation (vertices
-     * closer than @p tolerance [m] merged). */
+     * closer than @p tolerance [m] merged). An inverted or degenerate cell
+     * (blocks whose sides cross) is an InputError for @p entry, its
+     * vertices given in the input's unit (@p length_scale,
+     * @p length_unit; check_quadrilaterals()). */
     void
-    create(Triangulation<2> &triangulation, const double tolerance) const;
+    create(Triangulation<2>  &triangulation,
+           const double       tolerance,
+           const std::string &entry,
+           const double       length_scale,
+           const std::string &length_unit) const;
 
   private:
     std::vector<Point<2>> vertices;

@@ -58,6 +58,21 @@ namespace lithostress
     {
       return {};
     }
+
+    /** The entry that messages about the coarse mesh's cells name (see
+     * check_coarse_cells()): the geometry's subsection, e.g.
+     * `Geometry/Subduction zone`, or its mesh file. */
+    virtual std::string
+    mesh_entry() const = 0;
+
+    /** How messages name coarse cell @p index: "coarse cell <index>" (in
+     * the order the geometry creates the cells), or the cell's number in a
+     * mesh file. */
+    virtual std::string
+    cell_name(const unsigned int index) const
+    {
+      return "coarse cell " + std::to_string(index);
+    }
   };
 
   /**

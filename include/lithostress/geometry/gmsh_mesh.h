@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 
 #include <lithostress/geometry/geometry_model.h>
+#include <lithostress/geometry/mesh_check.h>
 
 #include <set>
 #include <string>
@@ -40,6 +41,13 @@ namespace lithostress
       parallel::distributed::Triangulation<dim> &tria) const override;
     std::map<std::string, types::boundary_id>
     boundary_parts() const override;
+    /** `Geometry/Gmsh/Mesh file`. */
+    std::string
+    mesh_entry() const override;
+    /** "<file>: element <number>": the number of the coarse cell's
+     * element in the mesh file. */
+    std::string
+    cell_name(const unsigned int index) const override;
     std::map<std::string, types::material_id>
     named_regions() const override;
     std::vector<FaultTrace>
@@ -59,17 +67,82 @@ namespace lithostress
     std::string
     text_without_fault_lines() const;
 
+    /** A 2-D element of the mesh file. */
+    struct FileCell
+    {
+      /** Its element number in the file. */
+      long number = 0;
+      /** Whether it is a quadrilateral whose four nodes the file has (of
+       * the others GridIn says what is wrong). */
+      bool checkable = false;
+      /** Its corners [m] and their node numbers, in the file's order. */
+      Quadrilateral       corners;
+      std::array<long, 4> nodes;
+    };
+
+    /** Read the 2-D elements of the file into `file_cells`, in the order
+     * of the coarse cells GridIn makes of them; none if the file is not
+     * ASCII MSH 2 or 4.1 (GridIn then says what is wrong). Never throws. */
+    void
+    read_file_cells();
+
+    /** Throw an InputError if a `$Section` of the file has no `$End`
+     * (a file cut off) or an `$End` closes no open section. */
+    void
+    check_sections() const;
+
+    /** Throw an InputError naming the element number and the vertices of
+     * the first quadrilateral of the file that is inverted or degenerate
+     * (check_quadrilaterals()), before GridIn would refuse it with a
+     * message that names neither. */
+    void
+    check_element_shapes() const;
+
+    /** Read the file with GridIn (without the fault curves' lines) into
+     * @p tria, coordinates in metres. */
+    void
+    read_triangulation(parallel::distributed::Triangulation<dim> &tria) const;
+
+    /** The `Circular arcs`: a PolarManifold on arc k (id 2k + 1), a
+     * TransfiniteInterpolationManifold id (2k + 2) on its cells. */
+    void
+    attach_boundary_arcs(parallel::distributed::Triangulation<dim> &tria) const;
+
+    /** The curved faults: a PolarManifold on the faces of fault j (id
+     * 2(n + j) + 1 after n boundary arcs), id 2(n + j) + 2 on their
+     * cells. */
+    void
+    attach_fault_arcs(parallel::distributed::Triangulation<dim> &tria) const;
+
+    /** The `Concentric arcs`: one PolarManifold on every line on the
+     * circles, inside or on the boundary (after the arcs' and faults'
+     * ids), the next id on their cells (the slab's layers of thesis §7.2).
+     * Throws an InputError if no line lies on them. */
+    void
+    attach_concentric_arcs(
+      parallel::distributed::Triangulation<dim> &tria) const;
+
+    /** The TransfiniteInterpolationManifolds of the cells next to arcs,
+     * made once every manifold id is set. */
+    void
+    attach_transfinite_interpolation(
+      parallel::distributed::Triangulation<dim> &tria) const;
+
     std::vector<FaultTrace> faults;
     /** The physical tags of the fault curves. */
-    std::set<int>                                   fault_tags;
-    std::string                                     mesh_file;
-    double                                          scale;
+    std::set<int> fault_tags;
+    std::string   mesh_file;
+    double        scale;
+    /** The `Length unit` (m or km), for messages. */
+    std::string                                     length_unit;
     std::vector<std::pair<std::string, Point<dim>>> arcs;
     /** `Concentric arcs`: the centre and radii [m]. */
     Point<dim>                                concentric_centre;
     std::vector<double>                       concentric_radii;
     std::map<std::string, types::boundary_id> boundary_names;
     std::map<std::string, types::material_id> region_names;
+    /** The 2-D elements of the file, coarse cell i being element i. */
+    std::vector<FileCell> file_cells;
   };
 } // namespace lithostress
 

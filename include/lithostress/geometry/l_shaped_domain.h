@@ -24,6 +24,11 @@ namespace lithostress
       parallel::distributed::Triangulation<dim> &tria) const override;
     std::map<std::string, types::boundary_id>
     boundary_parts() const override;
+    std::string
+    mesh_entry() const override
+    {
+      return "Geometry/L-shaped domain";
+    }
 
   private:
     double half_size;

@@ -29,6 +29,11 @@ namespace lithostress
       parallel::distributed::Triangulation<dim> &tria) const override;
     std::map<std::string, types::boundary_id>
     boundary_parts() const override;
+    std::string
+    mesh_entry() const override
+    {
+      return "Geometry/Quarter annulus";
+    }
     std::map<std::string, types::material_id>
     named_regions() const override;
 

@@ -32,6 +32,11 @@ namespace lithostress
       parallel::distributed::Triangulation<dim> &tria) const override;
     std::map<std::string, types::boundary_id>
     boundary_parts() const override;
+    std::string
+    mesh_entry() const override
+    {
+      return "Geometry/Rectangular block";
+    }
 
   private:
     double       x0, x1, y0, y1;
@@ -56,6 +61,11 @@ namespace lithostress
       parallel::distributed::Triangulation<dim> &tria) const override;
     std::map<std::string, types::boundary_id>
     boundary_parts() const override;
+    std::string
+    mesh_entry() const override
+    {
+      return "Geometry/Cantilever beam";
+    }
 
   private:
     double       length, depth;
@@ -80,6 +90,11 @@ namespace lithostress
       parallel::distributed::Triangulation<dim> &tria) const override;
     std::map<std::string, types::boundary_id>
     boundary_parts() const override;
+    std::string
+    mesh_entry() const override
+    {
+      return "Geometry/Thin plate";
+    }
 
   private:
     double       length, thickness;
@@ -108,12 +123,55 @@ namespace lithostress
       parallel::distributed::Triangulation<dim> &tria) const override;
     std::map<std::string, types::boundary_id>
     boundary_parts() const override;
+    std::string
+    mesh_entry() const override
+    {
+      return "Geometry/Layered box";
+    }
     std::map<std::string, types::material_id>
     named_regions() const override;
     std::vector<FaultTrace>
     fault_traces() const override;
 
   private:
+    /** The faults' entries (`Fault surface x`, `Fault names`, `Fault
+     * dip`, `Fault dips towards` and the arc's): each fault's trace as
+     * given, planar or listric (thesis §6.1-6.3), into `faults` and
+     * `surface_x_given`. One value for all faults or one per fault. */
+    void
+    parse_fault_geometry(ParameterHandler &prm, const double scale);
+
+    /** `Fault arc centre` (@p entry): one `x, y` per fault, separated by
+     * `;`, an empty one for a planar fault, or one for all faults. */
+    static std::vector<std::string>
+    arc_centres(const std::string &entry, const unsigned int n_faults);
+
+    /** The arc of a listric @p fault: its centre, radius and the depth
+     * where it begins, as given (in the length unit). */
+    static void
+    parse_fault_arc(FaultTrace        &fault,
+                    const std::string &centre,
+                    const std::string &radius,
+                    const std::string &from_depth,
+                    const double       scale);
+
+    /** Place fault @p k in the box of the parsed layers: its surface
+     * trace (implied by its arc for `auto`), and check that it crosses the
+     * box from the top to the base. */
+    void
+    place_fault(const unsigned int k, const double scale);
+
+    /** The arc of fault @p k in the box: it must reach from where it
+     * begins (a row of the coarse mesh) to the base without turning back;
+     * it fixes or checks the surface trace. */
+    void
+    place_fault_arc(const unsigned int k, const double scale);
+
+    /** Sort the faults left to right at mid-depth; throw if two meet or
+     * cross in the box. */
+    void
+    check_faults_apart(const double scale);
+
     double                    width;
     std::vector<double>       interfaces;
     std::vector<std::string>  layer_names;

@@ -5,9 +5,11 @@
 
 namespace lithostress
 {
+  class BlockMesh;
+
   /**
    * The cross section of an active continental margin of thesis §7.2
-   * (SPEC §5.2): an oceanic plate on the left (crust, elastic lid and
+   * (doc/subduction.md): an oceanic plate on the left (crust, elastic lid and
    * visco-elastic mantle under a flat sea floor) that bends down along the
    * plate boundary, a circle of radius R about c touching the sea floor
    * at its top (R = 300 km about (445.456, −305) km: the sea floor at
@@ -42,12 +44,93 @@ namespace lithostress
       parallel::distributed::Triangulation<dim> &tria) const override;
     std::map<std::string, types::boundary_id>
     boundary_parts() const override;
+    std::string
+    mesh_entry() const override
+    {
+      return "Geometry/Subduction zone";
+    }
     std::map<std::string, types::material_id>
     named_regions() const override;
     std::vector<FaultTrace>
     fault_traces() const override;
 
   private:
+    /** The numbers of coarse cells of the blocks. */
+    struct CellCounts
+    {
+      /** Through the oceanic crust and through the rest of the lid. */
+      unsigned int crust, lid;
+      /** Through the continental upper crust, lower crust and mantle; the
+       * mantle's count (even) also through the oceanic mantle, which it
+       * meets at the slab's end. */
+      unsigned int continental[3];
+      /** Along the continental surface from the trench to the coast. */
+      unsigned int wedge;
+      /** Along the slab between consecutive stations. */
+      unsigned int along_slab[3];
+    };
+
+    /** Cells along @p length: the Coarse cell size, at least one. */
+    unsigned int
+    cells_along(const double length) const;
+
+    /** The unit vector from the circle's centre towards @p p. */
+    Tensor<1, 2>
+    direction_to(const Point<2> &p) const;
+
+    /** Where the ray from the centre in direction @p u meets the base. */
+    Point<2>
+    at_base(const Tensor<1, 2> &u) const;
+
+    /** The stations across the slab: the directions from the centre of
+     * the circle's top, the trench and the two crossings of the
+     * continental layer boundaries with the plate boundary. */
+    std::vector<Tensor<1, 2>>
+    slab_stations() const;
+
+    /** The cell counts: the Coarse cell size through each layer and along
+     * the slab between the stations @p station, the arcs along the plate
+     * boundary counted for the continental layers beside them. */
+    CellCounts
+    cell_counts(const std::vector<Tensor<1, 2>> &station) const;
+
+    /** The oceanic plate seaward of the circle's top: flat layers of crust,
+     * lid and mantle (material ids 0, 1, 2). */
+    void
+    build_oceanic_plate(BlockMesh &blocks, const CellCounts &n) const;
+
+    /** The slab between consecutive stations: crust and lid between the
+     * concentric arcs, the mantle below them down to the base. */
+    void
+    build_slab_blocks(BlockMesh                       &blocks,
+                      const std::vector<Tensor<1, 2>> &station,
+                      const CellCounts                &n) const;
+
+    /** The slab's end, from the last station @p u to the base: crust and
+     * lid along the arcs, the mantle below as a three-sided region. */
+    void
+    build_slab_end(BlockMesh          &blocks,
+                   const Tensor<1, 2> &u,
+                   const CellCounts   &n) const;
+
+    /** The continental plate's upper crust, lower crust and mantle
+     * (material ids 3, 4, 5) between the plate boundary and the right
+     * edge, their tops following the surface, which kinks at the coast. */
+    void
+    build_continental_plate(BlockMesh &blocks, const CellCounts &n) const;
+
+    /** A PolarManifold (id 1) on the faces on the plate boundary's circle
+     * and the slab's concentric arcs, a TransfiniteInterpolationManifold
+     * (id 2) on their cells. */
+    void
+    attach_circle_manifolds(
+      parallel::distributed::Triangulation<dim> &tria) const;
+
+    /** The boundary parts: left, right, base, ocean_floor (the top
+     * seaward of the trench) and land. */
+    void
+    set_boundary_ids(parallel::distributed::Triangulation<dim> &tria) const;
+
     /** The trench axis: the circle at the Trench position. */
     Point<2>
     trench() const;
@@ -71,6 +154,9 @@ namespace lithostress
     Point<2> centre;
     double   oceanic_crust, oceanic_lid, continental_elastic, continental_crust,
       cell_size;
+    /** The `Length unit` (m or km) and its length [m], for messages. */
+    double      length_scale;
+    std::string length_unit;
   };
 } // namespace lithostress
 

@@ -8,7 +8,7 @@
 namespace lithostress
 {
   /**
-   * Density stripping (thesis §7.3, Bott & Dean 1972; SPEC §3.2): the body
+   * Density stripping (thesis §7.3; Bott & Dean 1972): the body
    * force −Δρ g ŷ of the density anomaly Δρ = ρ(material) − ρ_ref(depth)
    * relative to a reference density–depth column, given piecewise constant
    * by depth intervals. The stresses computed are then relative to those of

@@ -6,8 +6,8 @@
 namespace lithostress
 {
   /**
-   * Gravity: the body force −ρ g ŷ of every material (SPEC §3.2, thesis
-   * §3.7.1), weak form ∫ −ρ g v_y dx.
+   * Gravity: the body force −ρ g ŷ of every material (thesis §3.7.1),
+   * weak form ∫ −ρ g v_y dx.
    */
   template <int dim>
   class Gravity : public Load<dim>
@@ -17,7 +17,7 @@ namespace lithostress
     declare_parameters(ParameterHandler &prm);
     /** Returns whether gravity is switched on. */
     bool
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
 
     void
     add_cell_terms(const FEValues<dim>              &fe_values,

@@ -9,10 +9,10 @@ namespace lithostress
 {
   /**
    * The isostatic restoring force of a fluid of density ρ_f in contact with
-   * a boundary part (thesis §3.7.2.3, SPEC §3.2): a vertical force ρ_f g u_y
-   * per unit horizontal length opposing the vertical displacement. Weak form
-   * ∫ ρ_f g u_y v_y |n_y| ds — symmetric, an exact Winkler foundation of
-   * stiffness ρ_f g on horizontal boundaries and the right total force on
+   * a boundary part (thesis §3.7.2.3, doc/equations.md §3.4): a vertical force
+   * ρ_f g u_y per unit horizontal length opposing the vertical displacement.
+   * Weak form ∫ ρ_f g u_y v_y |n_y| ds — symmetric, an exact Winkler foundation
+   * of stiffness ρ_f g on horizontal boundaries and the right total force on
    * sloping and curved ones. It adds a boundary term to the stiffness.
    */
   template <int dim>

@@ -9,8 +9,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <lithostress/base/gravity_field.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/initial_stress_source.h>
 #include <lithostress/materials/material.h>
 
 #include <map>
@@ -34,6 +36,8 @@ namespace lithostress
     std::map<std::string, types::boundary_id> boundary_parts;
     double                                    length_scale = 1.0;
     const ReferenceSolution<dim>             *reference    = nullptr;
+    /** g and the height of zero depth of every gravity term. */
+    GravityField gravity;
 
     /** The id of boundary part @p name; InputError naming @p entry if the
      * mesh has no such part. */
@@ -75,7 +79,7 @@ namespace lithostress
    * own parameters under `Loads`; LoadCollection wires them.
    */
   template <int dim>
-  class Load
+  class Load : public InitialStressSource<dim>
   {
   public:
     virtual ~Load() = default;
@@ -126,11 +130,11 @@ namespace lithostress
                      const Quadrature<dim - 1> &face_quadrature);
 
     /**
-     * Whether the load carries an initial strain (SPEC §3.1: σ = C(ε − ε0)),
-     * so that the stress at a given strain depends on it.
+     * Whether the load carries an initial strain (thesis eq. 3.38:
+     * σ = C(ε − ε0)), so that the stress at a given strain depends on it.
      */
-    virtual bool
-    has_initial_stress() const
+    bool
+    has_initial_stress() const override
     {
       return false;
     }
@@ -141,12 +145,12 @@ namespace lithostress
      * StressModel for every reported stress, and by the load itself for its
      * right-hand side −∫ σ0 : ε(v) dx.
      */
-    virtual void
+    void
     add_initial_stress(const Point<dim>         &p,
                        const Material           &material,
                        const ElasticModuli<dim> &moduli,
                        SymmetricTensor<2, dim>  &stress,
-                       double                   &sigma_zz) const;
+                       double                   &sigma_zz) const override;
 
     /** Evaluate the load's functions of time t at @p time [s] from now
      * on; the visco-elastic loop sets it before each assembly. */

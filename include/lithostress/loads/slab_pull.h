@@ -10,8 +10,8 @@ namespace lithostress
 {
   /**
    * The pull of the subducted slab where the section truncates it (thesis
-   * §7.4, SPEC §5.2): a force per unit length F = P (1 / tan I, −1) on a
-   * boundary part (the base beneath the slab, A–A), pulling down and
+   * §7.4, doc/subduction.md): a force per unit length F = P (1 / tan I, −1)
+   * on a boundary part (the base beneath the slab, A–A), pulling down and
    * down-dip (towards +x) at the dip I, spread over the part by a weight
    * w(x, y) ≥ 0 as the traction t = F w / ∫ w ds.
    *

@@ -9,7 +9,7 @@
 namespace lithostress
 {
   /**
-   * Thermal initial strain (thesis §3.8, SPEC §3.2): a temperature change
+   * Thermal initial strain (thesis §3.8, §7.6.2): a temperature change
    * ΔT(x, y) expands the rock isotropically by ε0 = α_lin ΔT in each of the
    * three directions, α_lin = α (a linear coefficient) or α/3 (a volumetric
    * one) — the reading is an explicit input because the thesis is ambiguous.

@@ -11,7 +11,7 @@
 namespace lithostress
 {
   /**
-   * The 2-D idealisation of the third direction (thesis card NST, SPEC §2):
+   * The 2-D idealisation of the third direction (thesis card NST):
    * plane strain (ε_zz = 0, σ_zz reported) or plane stress (σ_zz = 0).
    */
   enum class PlaneState
@@ -22,8 +22,8 @@ namespace lithostress
 
   /**
    * Lamé parameters of the in-plane law σ = λ tr(ε) I + 2 μ ε at one point:
-   * λ is the plane-state λ (λ* = 2λμ/(λ + 2μ) in plane stress, SPEC §3.1).
-   * What the stiffness kernels need, per cell or per quadrature point.
+   * λ is the plane-state λ (λ* = 2λμ/(λ + 2μ) in plane stress, thesis
+   * §3.6.2). What the stiffness kernels need, per cell or per quadrature point.
    */
   struct LameParameters
   {
@@ -37,7 +37,7 @@ namespace lithostress
 
   /**
    * Isotropic linear elasticity of one material in the chosen plane state
-   * (SPEC §3.1): the in-plane stiffness tensor, its inverse, and the
+   * (thesis §3.6.2): the in-plane stiffness tensor, its inverse, and the
    * out-of-plane stress σ_zz. In plane stress the in-plane law is the 3-D
    * law with λ replaced by λ* = 2λμ/(λ + 2μ).
    */
@@ -78,9 +78,10 @@ namespace lithostress
 
     /**
      * The stress of an isotropic 3-D initial strain ε0 I (thermal expansion,
-     * SPEC §3.2) when the total strain is zero: σ = −C ε0. Returns the in-plane
-     * diagonal value and σ_zz: −(3λ + 2μ) ε0 for both in plane strain (ε_zz =
-     * 0), −E/(1 − ν) ε0 and 0 in plane stress (σ_zz = 0, free expansion in z).
+     * thesis §3.8) when the total strain is zero: σ = −C ε0. Returns the
+     * in-plane diagonal value and σ_zz: −(3λ + 2μ) ε0 for both in plane
+     * strain (ε_zz = 0), −E/(1 − ν) ε0 and 0 in plane stress (σ_zz = 0, free
+     * expansion in z).
      */
     std::pair<double, double>
     isotropic_initial_strain_stress(const double initial_strain) const;

@@ -14,7 +14,7 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The properties of one rock type (SPEC §3.1, thesis table 6.1 and 7.1):
+   * The properties of one rock type (thesis §3.6.2, tables 6.1 and 7.1):
    * isotropic elasticity, density, tensile strength for the Griffith test and
    * the Maxwell viscosity (0 = purely elastic; used by the visco-elastic loop).
    */

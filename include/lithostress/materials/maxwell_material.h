@@ -11,7 +11,7 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * Maxwell visco-elasticity of one material (SPEC §3.3; thesis §2.6, §3.9):
+   * Maxwell visco-elasticity of one material (thesis §2.6, §3.9):
    * an elastic bulk response and, on the 3-D deviator (σ_zz included),
    * ė' = ṡ/(2G) + s/(2η). The creep strain c is deviatoric; the stress is
    * σ = K tr ε I + 2G (e − c) with e the deviator of the total strain.

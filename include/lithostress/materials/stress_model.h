@@ -4,11 +4,12 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <lithostress/loads/load_collection.h>
+#include <lithostress/materials/creep_strain.h>
 #include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/initial_stress_source.h>
 #include <lithostress/materials/material.h>
 #include <lithostress/materials/maxwell_material.h>
-#include <lithostress/time_integration/creep_strain.h>
+#include <lithostress/materials/creep_strain.h>
 
 #include <map>
 #include <vector>
@@ -24,14 +25,14 @@ namespace lithostress
   };
 
   /**
-   * The constitutive law as every result sees it (SPEC §3.1, σ = C(ε − ε0)):
-   * the elastic stress of the cell's material in the model's plane state plus
-   * the stresses of the initial strains carried by loads (thermal strain,
-   * §3.8). Output, point values, stress–depth profiles, error norms and
-   * refinement indicators all take their stress from here, so that an
-   * initial strain enters every result once and in the same way.
+   * The constitutive law as every result sees it (thesis eq. 3.38,
+   * σ = C(ε − ε0)): the elastic stress of the cell's material in the model's
+   * plane state plus the stresses of the initial strains carried by loads
+   * (thermal strain, §3.8). Output, point values, stress–depth profiles, error
+   * norms and refinement indicators all take their stress from here, so that
+   * an initial strain enters every result once and in the same way.
    *
-   * With Maxwell materials (SPEC §3.3) the model also holds the creep-strain
+   * With Maxwell materials (thesis §3.9) the model also holds the creep-strain
    * history (attach_creep_strain()): every reported stress is then
    * σ = C (ε − c) + thermal stress, with the elastic moduli and the creep
    * strain c at the point, and a time step's linear system uses the relaxed
@@ -41,9 +42,11 @@ namespace lithostress
   class StressModel
   {
   public:
-    StressModel(const MaterialLibrary     &materials,
-                const PlaneState           plane_state,
-                const LoadCollection<dim> &loads);
+    /** The stress of @p materials in @p plane_state, with the initial
+     * stresses of those @p sources that carry one (the model's loads). */
+    StressModel(const MaterialLibrary                           &materials,
+                const PlaneState                                 plane_state,
+                const std::vector<const InitialStressSource<dim> *> &sources);
 
     /** The stress at @p p in a cell of material @p id with strain @p strain. */
     StressState<dim>
@@ -121,13 +124,6 @@ namespace lithostress
       return version;
     }
 
-    /** The step length and weight set last. */
-    std::pair<double, double>
-    time_step() const
-    {
-      return {step_length, step_theta};
-    }
-
     /** Include the creep strain @p creep in every reported stress
      * (nullptr: none). */
     void
@@ -157,7 +153,7 @@ namespace lithostress
     std::map<types::material_id, ElasticModuli<dim>>   moduli_of;
     std::map<types::material_id, ElasticModuli<dim>>   step_moduli_of;
     std::map<types::material_id, MaxwellMaterial<dim>> maxwell_of;
-    std::vector<const Load<dim> *>                     initial_stress_loads;
+    std::vector<const InitialStressSource<dim> *>      initial_stress_loads;
     const CreepStrain<dim>                            *creep_strain = nullptr;
     double             step_length = 0, step_theta = 1;
     unsigned long long version = 0;

@@ -3,7 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <lithostress/output/run_log.h>
+#include <lithostress/base/run_log.h>
 #include <lithostress/postprocess/stress_sampling.h>
 
 #include <string>

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <lithostress/base/gravity_field.h>
+
 #include <array>
 #include <string>
 
@@ -11,7 +13,7 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The modified Griffith failure criterion (SPEC §3.6, thesis §2.5.1 and
+   * The modified Griffith failure criterion (thesis §2.5.1 and
    * subroutine FAIL), written down in doc/griffith.md.
    *
    * Tension is positive. From the in-plane principal stresses σ1 ≥ σ2 the
@@ -85,10 +87,12 @@ namespace lithostress
     /**
      * Read the subsection `Griffith failure`. Throws an InputError naming the
      * entry unless σc/T < 0, μF > 0 and μF²(1 − σc/T) ≥ 1 (continuous
-     * envelope).
+     * envelope). The lithostatic pressure takes g and the depth origin of
+     * @p gravity_field.
      */
     void
-    parse_parameters(ParameterHandler &prm, const double length_scale = 1.0);
+    parse_parameters(ParameterHandler   &prm,
+                     const GravityField &gravity_field = GravityField());
 
     /**
      * Decide whether the lithostatic stress is added before the test

@@ -12,7 +12,7 @@
 namespace lithostress
 {
   /** The in-plane principal stresses σ1 ≥ σ2 and the angle of σ1 from the
-   * x axis (radians, in (−π/2, π/2]); tension positive (SPEC §2). */
+   * x axis (radians, in (−π/2, π/2]); tension positive (thesis §2.5.1). */
   struct PrincipalStresses
   {
     double sigma_1, sigma_2, angle_1;
@@ -23,7 +23,7 @@ namespace lithostress
   principal_stresses(const SymmetricTensor<2, 2> &stress);
 
   /**
-   * What the stress analysis reports at a point (SPEC §3.6): principal
+   * What the stress analysis reports at a point (thesis §2.5.1): principal
    * stresses, the deviatoric stresses relative to the mean of the three
    * principal stresses (thesis DEVST) and the modified Griffith test.
    */
@@ -58,8 +58,8 @@ namespace lithostress
    * stresses (thesis DEVST), and the modified Griffith test of the
    * material's tensile strength (degree of failure C, regime 0–3 and the
    * fracture angle in degrees; where T = 0 the test is not made: regime −1, C =
-   * 1; SPEC §3.6, with the lithostatic pressure FAIL adds when the model has
-   * no full body force), tension positive, evaluated through the model's
+   * 1; doc/griffith.md, with the lithostatic pressure FAIL adds when the model
+   * has no full body force), tension positive, evaluated through the model's
    * StressModel (each cell's material, initial strains included).
    */
   template <int dim>

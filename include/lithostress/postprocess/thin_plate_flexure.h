@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <lithostress/materials/material.h>
-#include <lithostress/output/run_log.h>
+#include <lithostress/base/run_log.h>
 
 #include <array>
 #include <string>
@@ -15,8 +15,8 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * Thin elastic plate on a fluid foundation under a line load V (SPEC §4,
-   * thesis §6.1.2; Turcotte & Schubert §3.17): w(x) = w0 e^{−x/α}
+   * Thin elastic plate on a fluid foundation under a line load V (thesis
+   * §6.1.2; Turcotte & Schubert §3.17): w(x) = w0 e^{−x/α}
    * (cos x/α + sin x/α) with D = E h³ / 12(1 − ν²) (plane strain),
    * α = (4D / ρ_f g)^{1/4}, w0 = V α³ / 8D; the forebulge crest lies at
    * x = πα with height w0 e^{−π}, the first zero at x = 3πα/4. Compares
@@ -31,7 +31,8 @@ namespace lithostress
     void
     parse_parameters(ParameterHandler      &prm,
                      const MaterialLibrary &materials,
-                     const double           length_scale);
+                     const double           length_scale,
+                     const double           gravity);
 
     bool enabled = false;
 

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <lithostress/base/gravity_field.h>
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/material.h>
 
@@ -41,6 +42,9 @@ namespace lithostress
     /** The exact in-plane stress [Pa], tension positive. */
     virtual SymmetricTensor<2, dim>
     stress(const Point<dim> &p) const = 0;
+
+    /** The model's gravity (set before parse_parameters()). */
+    GravityField gravity;
   };
 
   /**
@@ -58,7 +62,8 @@ namespace lithostress
     create(ParameterHandler      &prm,
            const MaterialLibrary &materials,
            const PlaneState       plane_state,
-           const double           length_scale);
+           const double           length_scale,
+           const GravityField    &gravity);
   };
 
   /**

@@ -18,8 +18,8 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The elasticity stiffness operator without a matrix (SPEC §3.1, thesis
-   * §3.6; the matrix-free technique of deal.II step-37 and Kronbichler &
+   * The elasticity stiffness operator without a matrix (thesis §3.6; the
+   * matrix-free technique of deal.II step-37 and Kronbichler &
    * Kormann 2012): v ↦ ∫ ε(w) : C ε(v) dx + ∫_Γ k |n_y| w_y v_y ds, evaluated
    * cell by cell with sum factorisation on a degree-@p fe_degree FE_Q^dim
    * space, through the MatrixFree object's mapping (curved cells follow their

@@ -17,7 +17,7 @@ namespace lithostress
    * translations and the rotation) on the owned DoFs, in the layout of
    * @p map: the near-null space that smoothed-aggregation AMG needs for
    * elasticity. deal.II 9.4.1 can pass only translations to ML, which
-   * doubles the iteration count (DEALII-9.4.1-NOTES.md), so the modes are
+   * doubles the iteration count (doc/dealii_facts.md), so the modes are
    * built here from the support point of each DoF; each field's modes are
    * zero on the other fields' DoFs, so faulted models get six modes.
    */

@@ -5,19 +5,71 @@
 
 #include <mpi.h>
 
+#include <map>
 #include <string>
+#include <vector>
 
 namespace lithostress
 {
   using namespace dealii;
 
+  /** What one accepted time step did: a row of time_steps.csv. */
+  struct StepRecord
+  {
+    unsigned int       step = 0;
+    double             time = 0, dt = 0;
+    unsigned long long dofs = 0, cells = 0;
+    unsigned int       linear_iterations = 0, nonlinear_iterations = 0;
+    unsigned int       rejected = 0;
+    /** max ‖Δc‖ and the step's relative local error estimate. */
+    double creep_increment = 0, error_estimate = 0;
+    double wall_time = 0;
+
+    /** boost::serialization of the record. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &step &time &dt &dofs &cells &linear_iterations
+        &nonlinear_iterations &rejected &creep_increment &error_estimate
+          &wall_time;
+    }
+  };
+
+  /**
+   * The visco-elastic loop's state besides the mesh and the fields: the
+   * time, the step control, the rows written so far, the faults' slip
+   * along them (FaultSlipHistory records, flattened) and the
+   * postprocessors' named state.
+   */
+  struct LoopState
+  {
+    unsigned int step = 0, linear_solves = 0;
+    double       time = 0, dt = 0, strain_scale = 0, stress_scale = 0;
+    /** The length of the last accepted step (BDF2's c_{n-1}). */
+    double                             previous_dt = 0;
+    std::vector<StepRecord>            steps;
+    std::vector<double>                fault_slip;
+    std::map<std::string, std::string> postprocessors;
+
+    /** boost::serialization of the state. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &step &linear_solves &time &dt &strain_scale &stress_scale
+        &previous_dt &steps &fault_slip &postprocessors;
+    }
+  };
+
   /**
    * Where the checkpoints of a visco-elastic run live and how one is
    * chosen (issue 15, doc/architecture.md). Each checkpoint is a directory
    * `checkpoint-<step>` in the output directory, with the mesh and the
-   * fields (p4est's save, the creep strain, start rate and displacement
-   * attached: readable on any number of ranks), the loop's state
-   * (`state.txt`) and the model it belongs to (`model.prm`). The file
+   * fields (p4est's save, the creep strain c_n and c_{n-1}, the start rate
+   * and the displacement attached: readable on any number of ranks), the
+   * loop's state (`state.txt`: LoopState as a boost::serialization text
+   * archive) and the model it belongs to (`model.prm`). The file
    * `checkpoint.current` names the last complete one and is replaced
    * atomically after the directory is complete, so a run killed at any
    * moment leaves the previous checkpoint valid.
@@ -25,6 +77,18 @@ namespace lithostress
   class Checkpoint
   {
   public:
+    /** Write @p state and the model @p model_text into @p directory
+     * (rank 0; every file written under a temporary name and renamed). */
+    static void
+    write_state(const std::string &directory,
+                const LoopState   &state,
+                const std::string &model_text);
+
+    /** Read the state of write_state() from @p directory; a
+     * ComputationError if it is damaged or of another format. */
+    static LoopState
+    read_state(const std::string &directory);
+
     /** The model of @p prm as text: every entry except those that may
      * change on resuming (output, solver, resources, time stepping). */
     static std::string

@@ -7,7 +7,7 @@
 
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/materials/stress_model.h>
-#include <lithostress/time_integration/creep_strain.h>
+#include <lithostress/materials/creep_strain.h>
 #include <lithostress/time_integration/time_stepping.h>
 
 #include <algorithm>
@@ -19,7 +19,7 @@ namespace lithostress
 
   /**
    * The update of the creep-strain history at the quadrature points in one
-   * time step (SPEC §3.3, doc/equations.md), for the integrators of
+   * time step (thesis §3.9, doc/equations.md §10), for the integrators of
    * TimeStepping. The implicit ones share one form: before the solve a
    * history strain c* (begin_step()), the solve with the relaxed moduli
    * G/(1 + w Δt/τ) and c* as initial strain, after it
@@ -215,7 +215,8 @@ namespace lithostress
     }
 
     /** End an implicit step with the new solution: c_{n+1} from the step
-     * stress (the stress model's step moduli must be those of the step). */
+     * stress with the weight of begin_step() (the stress model's step
+     * moduli must be those of the step). */
     Increment
     finish_implicit_step(const DoFHandler<dim>               &dof_handler,
                          const FiniteElementSpace<dim>       &fe_space,
@@ -286,6 +287,8 @@ namespace lithostress
     double step = 0, previous_step = 0;
     /** Whether the step of begin_step() is a BDF2 step. */
     bool bdf2_step = false;
+    /** The weight w of the end rate in the step of begin_step(). */
+    double step_weight = 0;
   };
 } // namespace lithostress
 

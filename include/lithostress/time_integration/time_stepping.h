@@ -11,7 +11,7 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The `Time stepping` section of a visco-elastic run (SPEC §3.3): the
+   * The `Time stepping` section of a visco-elastic run (thesis §3.9): the
    * time unit (s, years, Myr, converted to seconds once here; every output
    * is in seconds), the end time, the integrator, the step-size control and
    * the output times, which steps land on exactly.

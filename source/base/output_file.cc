@@ -1,5 +1,5 @@
 #include <lithostress/base/input_error.h>
-#include <lithostress/output/output_file.h>
+#include <lithostress/base/output_file.h>
 
 #include <unistd.h>
 

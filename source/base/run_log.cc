@@ -1,4 +1,4 @@
-#include <lithostress/output/run_log.h>
+#include <lithostress/base/run_log.h>
 
 #include <iostream>
 

@@ -1,5 +1,5 @@
-#ifndef lithostress_discretization_elastic_assembler_h
-#define lithostress_discretization_elastic_assembler_h
+#ifndef lithostress_assembly_elastic_assembler_h
+#define lithostress_assembly_elastic_assembler_h
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/fe_values.h>
@@ -12,7 +12,7 @@
 namespace lithostress
 {
   /**
-   * Assembles the elasticity system (SPEC §3.1, thesis §3.6): the stiffness
+   * Assembles the elasticity system (thesis §3.6): the stiffness
    * ∫ ε(v) : C ε(u) dx of every cell with the moduli of its material, and
    * the contributions of every load (cell and boundary integrals), through
    * the constraints into the distributed matrix and right-hand side. Cells

@@ -1,5 +1,5 @@
-#ifndef lithostress_output_run_log_h
-#define lithostress_output_run_log_h
+#ifndef lithostress_base_run_log_h
+#define lithostress_base_run_log_h
 
 #include <deal.II/base/mpi.h>
 

@@ -57,7 +57,7 @@ for row in table(out):
 
 # Uniform refinement: the singularity limits the goals' rate to lambda.
 out_u = os.path.abspath("output_goals_uniform")
-run("l_shaped/goal_oriented.prm", out_u, 1,
+run("refinement/goal_oriented.prm", out_u, 1,
     ["Mesh refinement/Strategy=global", "Mesh refinement/Number of cycles=5"])
 uniform = table(out_u)
 for g in GOALS:
@@ -66,7 +66,7 @@ for g in GOALS:
 
 # Goal-oriented refinement.
 out_g = os.path.abspath("output_goals_adaptive")
-run("l_shaped/goal_oriented.prm", out_g, 1, ["Mesh refinement/Number of cycles=30"])
+run("refinement/goal_oriented.prm", out_g, 1, ["Mesh refinement/Number of cycles=30"])
 adaptive = table(out_g)
 first = next(i for i, r in enumerate(adaptive) if r["dofs"] >= 500)
 for g in GOALS:
@@ -82,7 +82,7 @@ for g in GOALS:
 
 # Cycles controlled by the goals.
 out_s = os.path.abspath("output_goals_stop")
-result = run("l_shaped/goal_oriented.prm", out_s, 1,
+result = run("refinement/goal_oriented.prm", out_s, 1,
              ["Mesh refinement/Number of cycles=40",
               "Mesh refinement/Goals/Stop at relative change=1e-3"])
 stopped = table(out_s)
@@ -95,7 +95,7 @@ check(all(last["rel_err_" + g] < 1e-3 for g in GOALS),
       % ", ".join("%.1e" % last["rel_err_" + g] for g in GOALS))
 
 out_n = os.path.abspath("output_goals_not_converged")
-result = run("l_shaped/goal_oriented.prm", out_n, 1,
+result = run("refinement/goal_oriented.prm", out_n, 1,
              ["Mesh refinement/Number of cycles=4",
               "Mesh refinement/Goals/Stop at relative change=1e-7"], expect_success=False)
 lines = [l for l in result.stderr.splitlines() if l.strip()]
@@ -108,7 +108,7 @@ check(result.returncode == 3 and len(lines) == 1 and "Mesh refinement/Goals" in 
 outs = {}
 for ranks in (1, 2):
     outs[ranks] = os.path.abspath("output_goals_ranks_%d" % ranks)
-    run("l_shaped/goal_oriented.prm", outs[ranks], ranks, ["Mesh refinement/Number of cycles=12"])
+    run("refinement/goal_oriented.prm", outs[ranks], ranks, ["Mesh refinement/Number of cycles=12"])
 one, two = table(outs[1]), table(outs[2])
 same_dofs = [a["dofs"] for a in one] == [b["dofs"] for b in two]
 difference = max(abs(a[g] - b[g]) / abs(a[g]) for a, b in zip(one, two) for g in GOALS)

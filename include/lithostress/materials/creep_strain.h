@@ -1,5 +1,5 @@
-#ifndef lithostress_time_integration_creep_strain_h
-#define lithostress_time_integration_creep_strain_h
+#ifndef lithostress_materials_creep_strain_h
+#define lithostress_materials_creep_strain_h
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
@@ -19,9 +19,9 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The creep strain of Maxwell materials (SPEC §3.3, thesis §3.9) as a
-   * history field: the 3-D deviatoric creep strain — components xx, yy, xy
-   * and zz in 2-D, where plane strain keeps ε_zz = 0 but creep in z does
+   * The creep strain of Maxwell materials (thesis §3.9, doc/equations.md §10)
+   * as a history field: the 3-D deviatoric creep strain — components xx, yy,
+   * xy and zz in 2-D, where plane strain keeps ε_zz = 0 but creep in z does
    * not vanish — stored as a discontinuous finite-element field whose nodes
    * are the Gauss points of the cell quadrature (FE_DGQArbitraryNodes on
    * QGauss(n)). So:
@@ -35,7 +35,7 @@ namespace lithostress
    *   (L2). Both are exact for a field that is a polynomial of degree n − 1
    *   in each coordinate; otherwise the error is that of the projection,
    *   O(h^n). This sidesteps 9.4.1's ContinuousQuadratureDataTransfer, which
-   *   cannot coarsen (DEALII-9.4.1-NOTES.md);
+   *   cannot coarsen (doc/dealii_facts.md);
    * - checkpoints are the same SolutionTransfer's serialization, so a run
    *   resumes on any number of ranks.
    */

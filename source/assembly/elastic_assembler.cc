@@ -3,7 +3,7 @@
 #include <deal.II/lac/trilinos_index_access.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/discretization/elastic_assembler.h>
+#include <lithostress/assembly/elastic_assembler.h>
 
 #include <Epetra_CrsMatrix.h>
 

@@ -1,7 +1,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_dgq.h>
 
-#include <lithostress/time_integration/creep_strain.h>
+#include <lithostress/materials/creep_strain.h>
 
 namespace lithostress
 {

@@ -1,5 +1,5 @@
-#ifndef lithostress_output_output_file_h
-#define lithostress_output_output_file_h
+#ifndef lithostress_base_output_file_h
+#define lithostress_base_output_file_h
 
 #include <sstream>
 #include <string>

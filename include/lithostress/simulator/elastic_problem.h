@@ -1,0 +1,223 @@
+#ifndef lithostress_simulator_elastic_problem_h
+#define lithostress_simulator_elastic_problem_h
+
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <lithostress/base/run_log.h>
+#include <lithostress/boundary_conditions/prescribed_displacement.h>
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/discretization/linear_system.h>
+#include <lithostress/faults/fault_interface.h>
+#include <lithostress/faults/fault_slip_history.h>
+#include <lithostress/faults/frictional_sliding_solver.h>
+#include <lithostress/loads/load_collection.h>
+#include <lithostress/materials/stress_model.h>
+#include <lithostress/postprocessors/simulator_access.h>
+#include <lithostress/refinement/stress_goals.h>
+#include <lithostress/solvers/linear_solver.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * The discrete elastic problem on the present mesh: DoFs, constraints,
+   * the linear system and its solution, the frictional faults' slip
+   * history, and the solvers. It sets up, assembles and solves at a model
+   * time with a given history strain (thesis §3.6–3.9: one linear solve,
+   * or the sliding iteration of §5.5); the refinement cycles and the
+   * visco-elastic loop drive it. It owns the mesh-dependent state; the
+   * model (materials, loads, boundary conditions, faults) is the
+   * Simulator's and is only read here.
+   */
+  template <int dim>
+  class ElasticProblem
+  {
+  public:
+    /** What the problem works on: the model's parts (read-only, except the
+     * stress model's step moduli, which the time loop sets). */
+    struct Model
+    {
+      MPI_Comm                                   communicator;
+      parallel::distributed::Triangulation<dim> &triangulation;
+      const FiniteElementSpace<dim>             &fe_space;
+      const StressModel<dim>                    &stress_model;
+      LoadCollection<dim>                       &loads;
+      const PrescribedDisplacement<dim>         &prescribed_displacement;
+      const FaultInterface<dim>                 &faults;
+    };
+
+    ElasticProblem(const Model                       &model,
+                   std::unique_ptr<LinearSolver<dim>> linear_solver,
+                   FrictionalSlidingSolver<dim>       &sliding_solver,
+                   RunLog                            &log,
+                   TimerOutput                       &timer);
+
+    /** Distribute the DoFs on the present mesh and build the constraints
+     * and the system at model time @p time. */
+    void
+    setup(const double time);
+
+    /** New prescribed values at @p time on the same mesh (the structure of
+     * the constraints, and so of the matrix, is unchanged). */
+    void
+    update_constraints(const double time);
+
+    /**
+     * Assemble at model time @p time with the history strain @p history of
+     * a time step (nullptr: none): the loads' mesh integrals once per mesh,
+     * the matrix only when the operator changed.
+     */
+    void
+    assemble(const double time, const CreepStrain<dim> *history = nullptr);
+
+    /**
+     * Solve. A frictional fault's slip is committed to its history if
+     * @p commit_slip (a time step commits it once the step is accepted:
+     * commit_slip()). If the sliding solve stops with an error, its last
+     * iterate becomes the solution and @p on_failure is called before the
+     * error is passed on.
+     */
+    void
+    solve(const bool                   commit_slip,
+          const std::function<void()> &on_failure = {});
+
+    /** Commit the slip of the last solve to the faults' history. */
+    void
+    commit_slip()
+    {
+      slip_history.commit();
+    }
+
+    /** Start the faults' slip from zero (an elastic cycle solves the load
+     * from the undeformed state on every mesh). */
+    void
+    reset_slip()
+    {
+      slip_history = FaultSlipHistory();
+    }
+
+    /** The discrete problem for the solvers (the solution's and the
+     * goals' dual problems). */
+    DiscreteProblem<dim>
+    discrete_problem();
+
+    /** The dual solutions of @p goals on the present operator
+     * (goal-oriented refinement; refinement/dual_solutions.h). */
+    std::vector<TrilinosWrappers::MPI::Vector>
+    solve_dual_problems(const StressGoals<dim> &goals, SolverReport &report);
+
+    /** Whether solvers keep their set-up between solves (the time loop
+     * solves many right-hand sides with one operator). */
+    void
+    keep_solver_setup(const bool keep)
+    {
+      keep_setup = keep;
+    }
+
+    /** The mesh (refined by RefinementCycles, saved and loaded by the
+     * time loop's checkpoints). */
+    parallel::distributed::Triangulation<dim> &
+    triangulation()
+    {
+      return model.triangulation;
+    }
+
+    const DoFHandler<dim> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+
+    /** The solution (ghosted); the time loop restores it after a rejected
+     * step. */
+    TrilinosWrappers::MPI::Vector &
+    solution()
+    {
+      return present_solution;
+    }
+
+    const TrilinosWrappers::MPI::Vector &
+    solution() const
+    {
+      return present_solution;
+    }
+
+    FaultSlipHistory &
+    fault_slip()
+    {
+      return slip_history;
+    }
+
+    const FaultSlipHistory &
+    fault_slip() const
+    {
+      return slip_history;
+    }
+
+    const LinearSolver<dim> &
+    linear_solver() const
+    {
+      return *solver;
+    }
+
+    CycleStatistics &
+    statistics()
+    {
+      return stats;
+    }
+
+    const CycleStatistics &
+    statistics() const
+    {
+      return stats;
+    }
+
+  private:
+    /** Hanging-node constraints, prescribed displacements and locked or
+     * kinematic faults at @p time. */
+    void
+    make_constraints(const double time);
+
+    /** Solve with the sliding iteration of the frictional faults. */
+    void
+    solve_sliding(TrilinosWrappers::MPI::Vector &owned_solution,
+                  const bool                     commit,
+                  const std::function<void()>   &on_failure);
+
+    /** The version of the operator: mesh and step moduli. */
+    unsigned long long
+    operator_version() const
+    {
+      return (mesh_version << 32) + model.stress_model.moduli_version();
+    }
+
+    Model                                model;
+    std::unique_ptr<LinearSolver<dim>>   solver;
+    FrictionalSlidingSolver<dim>        &sliding_solver;
+    RunLog                              &log;
+    TimerOutput                         &timer;
+    DoFHandler<dim>                      dofs;
+    LinearSystem<dim>                    system;
+    TrilinosWrappers::MPI::Vector        present_solution;
+    /** The frictional faults' accumulated slip (their history). */
+    FaultSlipHistory                     slip_history;
+    CycleStatistics                      stats;
+    bool                                 keep_setup = false;
+    /** Counts the meshes set up. */
+    unsigned long long mesh_version = 0;
+    /** The mesh the loads' mesh integrals were computed on. */
+    unsigned long long loads_prepared_for = ~0ULL;
+    /** The operator version the assembled matrix belongs to. */
+    unsigned long long matrix_version = ~0ULL;
+  };
+} // namespace lithostress
+
+#endif

@@ -1,0 +1,62 @@
+#include <lithostress/base/input_error.h>
+#include <lithostress/postprocess/surface_profile.h>
+#include <lithostress/postprocessors/surface_profile_output.h>
+
+namespace lithostress
+{
+  template <int dim>
+  types::boundary_id
+  surface_boundary(ParameterHandler &prm, const SimulatorAccess<dim> &a)
+  {
+    prm.enter_subsection("Output");
+    const std::string name =
+      Utilities::trim(prm.get("Surface profile boundary"));
+    prm.leave_subsection();
+    if (name.empty())
+      return numbers::invalid_boundary_id;
+    return a.model.boundary_id(name, "Output/Surface profile boundary");
+  }
+
+  template <int dim>
+  void
+  SurfaceProfileOutput<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Surface profile boundary",
+                      "",
+                      Patterns::Anything(),
+                      "Boundary part whose displacement is written to "
+                      "surface_profile.csv (x, u_x, u_y, y in m, sorted by "
+                      "x) each cycle; empty = none.");
+    prm.leave_subsection();
+  }
+
+  template <int dim>
+  void
+  SurfaceProfileOutput<dim>::parse_parameters(ParameterHandler           &prm,
+                                              const SimulatorAccess<dim> &a)
+  {
+    boundary = surface_boundary(prm, a);
+  }
+
+  template <int dim>
+  void
+  SurfaceProfileOutput<dim>::cycle_finished(const SimulatorAccess<dim> &a,
+                                            const unsigned int,
+                                            ConvergenceStudy &,
+                                            std::ostream &)
+  {
+    if (boundary == numbers::invalid_boundary_id)
+      return;
+    const auto profile =
+      surface_profile(a.dof_handler, a.fe_space, a.solution, boundary);
+    on_all_ranks(a.communicator, [&]() {
+      if (a.root())
+        write_surface_profile<dim>(a.path("surface_profile.csv"), profile);
+    });
+  }
+
+  template class SurfaceProfileOutput<2>;
+  template types::boundary_id
+  surface_boundary(ParameterHandler &, const SimulatorAccess<2> &);
+} // namespace lithostress
