@@ -41,12 +41,13 @@ namespace lithostress
     /** σ = C ε + (stress of the initial strain @p initial) + thermal. */
     template <int dim>
     StressState<dim>
-    stress_with_initial_strain(const ElasticModuli<dim>             &m,
-                               const Material                       &material,
-                               const std::vector<const InitialStressSource<dim> *> &loads,
-                               const Point<dim>                     &p,
-                               const SymmetricTensor<2, dim>        &strain,
-                               const SymmetricTensor<2, 3>          &initial)
+    stress_with_initial_strain(
+      const ElasticModuli<dim>                            &m,
+      const Material                                      &material,
+      const std::vector<const InitialStressSource<dim> *> &loads,
+      const Point<dim>                                    &p,
+      const SymmetricTensor<2, dim>                       &strain,
+      const SymmetricTensor<2, 3>                         &initial)
     {
       StressState<dim> s;
       s.in_plane             = m.stress(strain);

@@ -1,8 +1,8 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/hp/fe_values.h>
 
-#include <lithostress/base/input_error.h>
 #include <lithostress/assembly/elastic_assembler.h>
+#include <lithostress/base/input_error.h>
 #include <lithostress/base/output_file.h>
 #include <lithostress/postprocess/force_balance.h>
 

@@ -67,7 +67,7 @@ namespace lithostress
   }
 
   void
-  GriffithFailure::parse_parameters(ParameterHandler &prm,
+  GriffithFailure::parse_parameters(ParameterHandler   &prm,
                                     const GravityField &gravity_field)
   {
     prm.enter_subsection("Griffith failure");

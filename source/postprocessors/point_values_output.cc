@@ -39,8 +39,7 @@ namespace lithostress
       if (!point_in_mesh<dim>(a.triangulation, a.fe_space.mapping(), p))
         throw_input_error("Convergence study/Points",
                           "the point (" + std::to_string(p[0]) + ", " +
-                            std::to_string(p[1]) +
-                            ") [m] is outside the mesh");
+                            std::to_string(p[1]) + ") [m] is outside the mesh");
   }
 
   template <int dim>
@@ -71,10 +70,10 @@ namespace lithostress
         study.add("s_yy" + at, v.stress[1][1], Kind::functional);
         study.add("s_xy" + at, v.stress[0][1], Kind::functional);
         if (a.reference)
-          study.add("err_u" + at,
-                    (v.displacement - a.reference->displacement(v.point))
-                      .norm(),
-                    Kind::error);
+          study.add(
+            "err_u" + at,
+            (v.displacement - a.reference->displacement(v.point)).norm(),
+            Kind::error);
       }
   }
 
@@ -128,7 +127,7 @@ namespace lithostress
 
   template <int dim>
   void
-  PointValuesOutput<dim>::load(const SimulatorAccess<dim>                &a,
+  PointValuesOutput<dim>::load(const SimulatorAccess<dim>               &a,
                                const std::map<std::string, std::string> &state)
   {
     history.clear();

@@ -117,7 +117,7 @@ namespace lithostress
 
   template <int dim>
   void
-  PostprocessorList<dim>::load(const SimulatorAccess<dim>                &access,
+  PostprocessorList<dim>::load(const SimulatorAccess<dim>               &access,
                                const std::map<std::string, std::string> &state)
   {
     for (const auto &p : postprocessors)

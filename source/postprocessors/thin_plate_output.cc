@@ -37,7 +37,8 @@ namespace lithostress
     // The profile of the refinement cycles' last mesh (the elastic
     // response, also when a time loop follows).
     if (thin_plate.enabled)
-      profile = surface_profile(a.dof_handler, a.fe_space, a.solution, boundary);
+      profile =
+        surface_profile(a.dof_handler, a.fe_space, a.solution, boundary);
   }
 
   template <int dim>

@@ -1,8 +1,8 @@
 #include <deal.II/dofs/dof_tools.h>
 
+#include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/interruption.h>
-#include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/postprocess/force_balance.h>
 #include <lithostress/refinement/dual_solutions.h>
 #include <lithostress/simulator/elastic_problem.h>
@@ -24,7 +24,8 @@ namespace lithostress
       , log(log)
       , timer(timer)
       , dofs(model.triangulation)
-  {}
+  {
+  }
 
   template <int dim>
   void
@@ -100,8 +101,8 @@ namespace lithostress
   ElasticProblem<dim>::assemble(const double            time,
                                 const CreepStrain<dim> *history)
   {
-    TimerOutput::Scope t(timer, "assemble");
-    Timer              clock(model.communicator, true);
+    TimerOutput::Scope   t(timer, "assemble");
+    Timer                clock(model.communicator, true);
     LoadCollection<dim> &loads = model.loads;
     // Mesh integrals of the loads once per mesh, not once per time step;
     // a slab pull that balances the other loads measures them there.
@@ -168,8 +169,8 @@ namespace lithostress
     if (!std::isfinite(norm))
       throw ComputationError("the solution of the linear system is not "
                              "finite (norm " +
-                             std::to_string(norm) + ", " +
-                             stats.solver.solver + ")");
+                             std::to_string(norm) + ", " + stats.solver.solver +
+                             ")");
     present_solution.reinit(system.locally_owned,
                             system.locally_relevant,
                             model.communicator);

@@ -69,8 +69,8 @@ namespace lithostress
 
   template <int dim>
   void
-  RefinementCycles<dim>::compute_cycle(ElasticProblem<dim>         &problem,
-                                       PostprocessorList<dim>      &postprocessors,
+  RefinementCycles<dim>::compute_cycle(ElasticProblem<dim>    &problem,
+                                       PostprocessorList<dim> &postprocessors,
                                        const SimulatorAccess<dim>  &access,
                                        const std::function<void()> &accepted)
   {
@@ -120,9 +120,11 @@ namespace lithostress
   void
   RefinementCycles<dim>::record_goals(const SimulatorAccess<dim> &a)
   {
-    const std::vector<double> values =
-      stress_goals.values(a.dof_handler, a.fe_space, a.stress_model, a.solution);
-    std::vector<double> exact;
+    const std::vector<double> values = stress_goals.values(a.dof_handler,
+                                                           a.fe_space,
+                                                           a.stress_model,
+                                                           a.solution);
+    std::vector<double>       exact;
     if (a.reference)
       exact = stress_goals.reference_values(a.dof_handler,
                                             a.fe_space,
@@ -206,8 +208,8 @@ namespace lithostress
     if (refinement.strategy == MeshRefinement<dim>::Strategy::adaptive &&
         refinement.indicator == MeshRefinement<dim>::Indicator::goal_oriented)
       {
-        weights = StressGoals<dim>::weights(
-          stress_goals.values(dofs, fe_space, stress_model, problem.solution()));
+        weights = StressGoals<dim>::weights(stress_goals.values(
+          dofs, fe_space, stress_model, problem.solution()));
         SolverReport report;
         duals = problem.solve_dual_problems(stress_goals, report);
         log << "  goal-oriented refinement: " << duals.size()

@@ -321,9 +321,8 @@ namespace lithostress
         interior_dofs * cells + boundary_dofs * growth,
         problem->linear_solver().name(),
         problem->linear_solver().memory_per_dof(),
-        problem->linear_solver().memory_of_levels(coarse_cells,
-                                        triangulation.n_global_levels() +
-                                          refinements),
+        problem->linear_solver().memory_of_levels(
+          coarse_cells, triangulation.n_global_levels() + refinements),
         "Mesh refinement/Initial global refinement" +
           std::string(cycles.settings().strategy ==
                           MeshRefinement<dim>::Strategy::global
@@ -419,9 +418,9 @@ namespace lithostress
       {
         const std::string checkpoint = Checkpoint::current(output_directory);
         return where + "; " +
-               (checkpoint.empty() ? "no checkpoint was written yet"
-                                   : "continue with --resume from " +
-                                       checkpoint);
+               (checkpoint.empty()
+                  ? "no checkpoint was written yet"
+                  : "continue with --resume from " + checkpoint);
       }
     const unsigned int cycle = cycles.cycle();
     std::string message = where + " of cycle " + std::to_string(cycle) + "; ";
@@ -430,8 +429,8 @@ namespace lithostress
     if (cycle == 1)
       return message + "the results of cycle 0 are complete in " +
              output_directory;
-    return message + "the results of cycles 0 to " +
-           std::to_string(cycle - 1) + " are complete in " + output_directory;
+    return message + "the results of cycles 0 to " + std::to_string(cycle - 1) +
+           " are complete in " + output_directory;
   }
 
   template <int dim>
@@ -470,8 +469,7 @@ namespace lithostress
     if (stress_model->has_viscous_material() && !time_stepping.enabled)
       log << "Note: the viscosities are not used (Time stepping/Enabled = "
              "false): this is the elastic response at t = 0.\n";
-    if (cycles.goals().stop_tolerance() > 0 &&
-        cycles.settings().n_cycles == 1)
+    if (cycles.goals().stop_tolerance() > 0 && cycles.settings().n_cycles == 1)
       log << "Note: a single refinement cycle: Mesh refinement/Goals/Stop "
              "at relative change has no cycle to compare with.\n";
 

@@ -19,7 +19,8 @@ namespace lithostress
       : settings(settings)
       , parts(parts)
       , wall_clock(parts.access.communicator, true)
-  {}
+  {
+  }
 
   template <int dim>
   unsigned int
@@ -293,8 +294,8 @@ namespace lithostress
   void
   ViscoelasticTimeLoop<dim>::resume()
   {
-    const SimulatorAccess<dim> &a         = parts.access;
-    ElasticProblem<dim>        &problem   = parts.problem;
+    const SimulatorAccess<dim> &a       = parts.access;
+    ElasticProblem<dim>        &problem = parts.problem;
     const std::string directory = Checkpoint::current(a.output_directory);
     const LoopState   state     = Checkpoint::read_state(directory);
     step                        = state.step;
@@ -304,8 +305,8 @@ namespace lithostress
     strain_scale                = state.strain_scale;
     stress_scale                = state.stress_scale;
     steps                       = state.steps;
-    std::vector<FaultSlipHistory::Record> fault_slip(
-      state.fault_slip.size() / 4);
+    std::vector<FaultSlipHistory::Record> fault_slip(state.fault_slip.size() /
+                                                     4);
     for (unsigned int k = 0; k < fault_slip.size(); ++k)
       for (unsigned int c = 0; c < 4; ++c)
         fault_slip[k][c] = state.fault_slip[4 * k + c];
@@ -353,16 +354,16 @@ namespace lithostress
   void
   ViscoelasticTimeLoop<dim>::run()
   {
-    parts.access.log
-      << "Visco-elastic time loop to " << settings.format(settings.end_time)
-      << " (" << settings.end_time << " s; every output time in s), "
-      << (settings.scheme == TimeStepping::Scheme::thesis
-            ? std::string("thesis initial-strain scheme")
-          : settings.scheme == TimeStepping::Scheme::bdf2
-            ? std::string("BDF2")
-            : "generalized midpoint rule, theta = " +
-                std::to_string(settings.theta))
-      << '\n';
+    parts.access.log << "Visco-elastic time loop to "
+                     << settings.format(settings.end_time) << " ("
+                     << settings.end_time << " s; every output time in s), "
+                     << (settings.scheme == TimeStepping::Scheme::thesis
+                           ? std::string("thesis initial-strain scheme")
+                         : settings.scheme == TimeStepping::Scheme::bdf2
+                           ? std::string("BDF2")
+                           : "generalized midpoint rule, theta = " +
+                               std::to_string(settings.theta))
+                     << '\n';
     parts.problem.keep_solver_setup(true);
     if (settings.resume)
       resume();

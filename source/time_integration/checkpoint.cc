@@ -101,8 +101,8 @@ namespace lithostress
       }
     catch (const boost::archive::archive_exception &e)
       {
-        throw ComputationError("the checkpoint " + file +
-                               " is damaged (" + e.what() + ")");
+        throw ComputationError("the checkpoint " + file + " is damaged (" +
+                               e.what() + ")");
       }
     return state;
   }

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
-#include <lithostress/base/input_error.h>
 #include <lithostress/assembly/elastic_assembler.h>
+#include <lithostress/base/input_error.h>
 #include <lithostress/time_integration/creep_integrator.h>
 
 namespace lithostress

@@ -117,11 +117,12 @@ main()
   // elastic part carry exactly that traction.
   for (const double sign : {1.0, -1.0})
     {
-      const double p_old = 0.2;
-      const double w_s   = p_old + sign * 1e8 / law.shear_stiffness;
-      const auto   r     = law.respond(w_s, w_n, p_old, depth);
-      const double limit = 0.1 * (1e5 + overburden);
-      const std::string s = sign > 0 ? " (positive shear)" : " (negative shear)";
+      const double      p_old = 0.2;
+      const double      w_s   = p_old + sign * 1e8 / law.shear_stiffness;
+      const auto        r     = law.respond(w_s, w_n, p_old, depth);
+      const double      limit = 0.1 * (1e5 + overburden);
+      const std::string s =
+        sign > 0 ? " (positive shear)" : " (negative shear)";
       check(r.state == SlipState::sliding, "sliding above the limit" + s);
       check(close(r.shear_traction, sign * limit, 1e-12, 1),
             "sliding: |t_s| = tau_F" + s);
@@ -154,8 +155,7 @@ main()
     const double eps   = 1e-9 * w_at;
     const auto   below = law.respond(w_at - eps, w_n, 0, depth);
     const auto   above = law.respond(w_at + eps, w_n, 0, depth);
-    check(below.state == SlipState::stuck &&
-            above.state == SlipState::sliding,
+    check(below.state == SlipState::stuck && above.state == SlipState::sliding,
           "stuck below and sliding above the limit");
     check(close(below.shear_traction, above.shear_traction, 1e-8, 1),
           "traction continuous from stuck to sliding");

@@ -166,7 +166,7 @@ main(int argc, char **argv)
 
   // The interface points: on their fault, normal into the hanging wall
   // (the graben for both faults), shear = normal turned clockwise.
-  const auto points = faults.interface_quadrature(dof_handler, fe_space);
+  const auto points    = faults.interface_quadrature(dof_handler, fe_space);
   double     length[2] = {0, 0}, off_fault = 0, frame = 0, depth = 0;
   bool       into_graben = true;
   for (const auto &p : points)
@@ -174,19 +174,19 @@ main(int argc, char **argv)
       const unsigned int k = p.fault;
       const Point<2>    &x = p.position;
       // Distance to the line x = fault_x(k, y): |Δx| sin(dip).
-      off_fault =
-        std::max(off_fault, std::abs(x[0] - fault_x(k, x[1])) / std::sqrt(1.25));
+      off_fault = std::max(off_fault,
+                           std::abs(x[0] - fault_x(k, x[1])) / std::sqrt(1.25));
       // Down the fault: the west one moves right with depth, the east one
       // left.
       Tensor<1, 2> along;
       along[0] = k == 0 ? run : -run;
       along[1] = -1;
-      frame = std::max({frame,
-                        std::abs(p.normal.norm() - 1),
-                        std::abs(p.shear.norm() - 1),
-                        std::abs(p.normal * along) / along.norm(),
-                        std::abs(p.shear[0] - p.normal[1]),
-                        std::abs(p.shear[1] + p.normal[0])});
+      frame    = std::max({frame,
+                           std::abs(p.normal.norm() - 1),
+                           std::abs(p.shear.norm() - 1),
+                           std::abs(p.normal * along) / along.norm(),
+                           std::abs(p.shear[0] - p.normal[1]),
+                           std::abs(p.shear[1] + p.normal[0])});
       into_graben =
         into_graben && (k == 0 ? p.normal[0] > 0.8 : p.normal[0] < -0.8);
       depth = std::max(depth, std::abs(p.depth + x[1]));
@@ -201,15 +201,16 @@ main(int argc, char **argv)
     Utilities::MPI::sum<unsigned long long>(points.size(), comm);
   if (root)
     std::cout << "  " << n_points << " interface points; largest distance "
-              << off_fault << " m, frame error " << frame
-              << ", depth error " << depth << " m; lengths " << length[0]
-              << ", " << length[1] << " m" << std::endl;
+              << off_fault << " m, frame error " << frame << ", depth error "
+              << depth << " m; lengths " << length[0] << ", " << length[1]
+              << " m" << std::endl;
   check(n_points > 0, "interface points on the faults");
   // Straight faults in straight cells: exact up to round-off of
   // coordinates of 1e5 m.
   check(off_fault < 1e-6, "every interface point lies on its fault");
-  check(frame < 1e-12, "unit normal and shear, normal across the fault, "
-                       "shear turned clockwise");
+  check(frame < 1e-12,
+        "unit normal and shear, normal across the fault, "
+        "shear turned clockwise");
   check(into_graben, "the normal points into the hanging wall (the graben)");
   check(depth < 1e-6, "depth = depth below the top surface");
   const double exact = 20e3 * std::sqrt(1.25);
@@ -220,8 +221,7 @@ main(int argc, char **argv)
 
   if (root)
     std::cout << (n_failed == 0 ? "all checks passed"
-                                : std::to_string(n_failed) +
-                                    " check(s) failed")
+                                : std::to_string(n_failed) + " check(s) failed")
               << std::endl;
   return n_failed == 0 ? 0 : 1;
 }

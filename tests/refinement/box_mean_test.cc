@@ -52,7 +52,8 @@ namespace
                      const MaterialLibrary &,
                      const PlaneState,
                      const double) override
-    {}
+    {
+    }
 
     Tensor<1, 2>
     displacement(const Point<2> &) const override
@@ -101,11 +102,11 @@ namespace
                    const double y1)
   {
     std::vector<Point<2>> p = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
-    p = clip(p, 0, -1, 0);        // y ≥ 0
-    p = clip(p, 0, 1, 2);         // y ≤ 2
-    p = clip(p, -1, shear, 0);    // x ≥ 0.3 y
-    p = clip(p, 1, -shear, 3);    // x ≤ 3 + 0.3 y
-    double   area = 0;
+    p                       = clip(p, 0, -1, 0);     // y ≥ 0
+    p                       = clip(p, 0, 1, 2);      // y ≤ 2
+    p                       = clip(p, -1, shear, 0); // x ≥ 0.3 y
+    p                       = clip(p, 1, -shear, 3); // x ≤ 3 + 0.3 y
+    double   area           = 0;
     Point<2> c;
     for (unsigned int i = 0; i < p.size(); ++i)
       {
@@ -170,8 +171,8 @@ main(int argc, char **argv)
   // name: component, x_min, x_max, y_min, y_max
   struct Box
   {
-    std::string name;
-    double      x0, x1, y0, y1;
+    std::string  name;
+    double       x0, x1, y0, y1;
     unsigned int component; // 0 xx, 1 yy, 2 xy
   };
   const std::vector<Box> boxes = {{"inside", 1.2, 2.1, 0.4, 1.3, 0},
@@ -200,12 +201,13 @@ main(int argc, char **argv)
     goals.reference_values(dof_handler, fe_space, stress_model, reference);
   for (unsigned int k = 0; k < boxes.size(); ++k)
     {
-      const Box     &b = boxes[k];
-      const Point<2> c = centroid_in_body(b.x0, b.x1, b.y0, b.y1);
-      const auto     s = reference.stress(c);
-      const double   exact =
-        b.component == 0 ? s[0][0] : b.component == 1 ? s[1][1] : s[0][1];
-      const double error = std::abs(means[k] - exact);
+      const Box     &b     = boxes[k];
+      const Point<2> c     = centroid_in_body(b.x0, b.x1, b.y0, b.y1);
+      const auto     s     = reference.stress(c);
+      const double   exact = b.component == 0   ? s[0][0]
+                             : b.component == 1 ? s[1][1]
+                                                : s[0][1];
+      const double   error = std::abs(means[k] - exact);
       if (root)
         std::cout << "  " << b.name << ": mean " << means[k] << ", exact "
                   << exact << ", error " << error << std::endl;
@@ -217,8 +219,7 @@ main(int argc, char **argv)
     }
   if (root)
     std::cout << (n_failed == 0 ? "all checks passed"
-                                : std::to_string(n_failed) +
-                                    " check(s) failed")
+                                : std::to_string(n_failed) + " check(s) failed")
               << std::endl;
   return n_failed == 0 ? 0 : 1;
 }
