@@ -12,20 +12,9 @@ LAYERS = ["base", "geometry", "materials", "reference_solutions",
           "solvers", "faults", "postprocess", "output", "refinement",
           "time_integration", "postprocessors", "simulator"]
 
-# Upward includes that are known and have a planned fix; each is printed,
-# none may be added. The fault trace is geometry and the fault samples are
-# postprocessing: both files move with the split of faults/ by concern
-# (issue 24, item 7).
-KNOWN = {
-    ("include/lithostress/geometry/coarse_mesh_writer.h", "faults"),
-    ("include/lithostress/geometry/geometry_model.h", "faults"),
-    ("include/lithostress/faults/fault_output.h", "postprocess"),
-    ("source/faults/fault_output.cc", "postprocess"),
-}
-
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")
 include = re.compile(r'#include <lithostress/([a-z_]+)/')
-bad = known_count = 0
+bad = 0
 for top in ("include/lithostress", "source"):
     for folder, _, files in os.walk(os.path.join(root, top)):
         rel = os.path.relpath(folder, os.path.join(root, top))
@@ -42,11 +31,8 @@ for top in ("include/lithostress", "source"):
                 m = include.match(line)
                 if m and LAYERS.index(m.group(1)) > LAYERS.index(layer):
                     rel_path = os.path.relpath(path, root)
-                    known = (rel_path, m.group(1)) in KNOWN
-                    print("%s:%d: %s includes the higher layer %s%s"
-                          % (rel_path, number, layer, m.group(1),
-                             " (known, to be moved)" if known else ""))
-                    bad += 0 if known else 1
-                    known_count += 1 if known else 0
-print("%d upward include(s), %d known ones" % (bad, known_count))
+                    print("%s:%d: %s includes the higher layer %s"
+                          % (rel_path, number, layer, m.group(1)))
+                    bad += 1
+print("%d upward include(s)" % bad)
 sys.exit(1 if bad else 0)

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/manifold.h>
 
 #include <lithostress/base/huge_pages.h>
@@ -8,6 +9,7 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/boundary_conditions/rigid_body_support.h>
 #include <lithostress/geometry/coarse_mesh_writer.h>
+#include <lithostress/geometry/mesh_check.h>
 #include <lithostress/simulator/simulator.h>
 #include <lithostress/simulator/viscoelastic_time_loop.h>
 #include <lithostress/time_integration/checkpoint.h>
@@ -134,6 +136,13 @@ namespace lithostress
     prm.leave_subsection();
     geometry = GeometrySelector<dim>::create(prm);
     geometry->create_coarse_mesh(triangulation);
+    // Every cell as the computation will see it (curved by the manifolds
+    // and the mapping), before anything is written.
+    check_coarse_cells(triangulation,
+                       MappingQ<dim>(use_manifolds ? mapping_degree : 1),
+                       *geometry,
+                       length_scale,
+                       length_unit);
     const std::string export_file =
       GeometrySelector<dim>::coarse_mesh_file(prm);
     on_all_ranks(communicator, [&]() {

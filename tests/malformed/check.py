@@ -5,7 +5,7 @@ override given in <name>.args, where {here} stands for this directory). On 1 and
 within seconds with exit status 1 and one line on stderr that names the
 entry or file, the same line on both, without a signal, a crash or a stack
 trace, and must leave an earlier run's output directory byte-identical."""
-import sys, os, subprocess, shutil, time
+import sys, os, subprocess, shutil, time, concurrent.futures
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import lithotest
 from lithotest import check, finish, env, BINARY
@@ -113,48 +113,65 @@ def tree(directory):
     return result
 
 
-earlier = os.path.abspath("earlier_results")
+def run_case(name, ranks):
+    """Run the malformed input @name on @ranks ranks against an earlier
+    run's output directory of its own; return what the checks need."""
+    earlier = os.path.abspath("earlier_results_%s_%d" % (name, ranks))
+    shutil.rmtree(earlier, ignore_errors=True)
+    os.makedirs(os.path.join(earlier, "figures"))
+    with open(os.path.join(earlier, "solution.pvd"), "w") as f:
+        f.write("results of an earlier run\n")
+    with open(os.path.join(earlier, "figures", "surface_profile.csv"), "w") as f:
+        f.write("x,u_x,u_y,y\n0,1,2,3\n")
+    if name == "resume_other_model":
+        # The checkpoint of a stiffer block.
+        os.makedirs(os.path.join(earlier, "checkpoint-000007"))
+        with open(os.path.join(earlier, "checkpoint.current"), "w") as f:
+            f.write("checkpoint-000007\n")
+        model = open(os.path.join(os.path.dirname(HERE), "viscoelastic", "maxwell_block.prm")).read()
+        with open(os.path.join(earlier, "checkpoint-000007", "model.prm"), "w") as f:
+            f.write(model.replace("1e11", "2e11"))
+    before = tree(earlier)
+    cmd = [BINARY, os.path.join(HERE, name + ".prm")]
+    if name == "unwritable_output_directory":
+        # A directory below an earlier result file cannot be made.
+        cmd += ["--set", "Output directory=" + os.path.join(earlier, "solution.pvd", "new")]
+    else:
+        cmd += ["--set", "Output directory=" + earlier]
+    args = os.path.join(HERE, name + ".args")
+    if os.path.exists(args):
+        cmd += [a.replace("{here}", HERE) for a in open(args).read().splitlines() if a]
+    environment = env()
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks)] + cmd
+        # Open MPI's own banner about a rank's non-zero exit (mpirun -q).
+        environment["OMPI_MCA_orte_execute_quiet"] = "1"
+    start = time.time()
+    try:
+        r = subprocess.run(cmd, capture_output=True, text=True, env=environment, timeout=120)
+    except subprocess.TimeoutExpired:
+        return None
+    seconds = time.time() - start
+    unchanged = tree(earlier) == before
+    shutil.rmtree(earlier, ignore_errors=True)
+    return r, seconds, unchanged
+
+
+# Two runs at a time (the test holds two processors; a run is mostly the
+# start-up of MPI and the libraries), checked in order.
+with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+    runs = {(name, ranks): pool.submit(run_case, name, ranks)
+            for name in files for ranks in (1, 2)}
 slowest = 0.0
 for name in files:
     messages = []
     for ranks in (1, 2):
         label = "%s (%d rank%s)" % (name, ranks, "s" if ranks > 1 else "")
-        shutil.rmtree(earlier, ignore_errors=True)
-        os.makedirs(os.path.join(earlier, "figures"))
-        with open(os.path.join(earlier, "solution.pvd"), "w") as f:
-            f.write("results of an earlier run\n")
-        with open(os.path.join(earlier, "figures", "surface_profile.csv"), "w") as f:
-            f.write("x,u_x,u_y,y\n0,1,2,3\n")
-        if name == "resume_other_model":
-            # The checkpoint of a stiffer block.
-            os.makedirs(os.path.join(earlier, "checkpoint-000007"))
-            with open(os.path.join(earlier, "checkpoint.current"), "w") as f:
-                f.write("checkpoint-000007\n")
-            model = open(os.path.join(os.path.dirname(HERE), "viscoelastic", "maxwell_block.prm")).read()
-            with open(os.path.join(earlier, "checkpoint-000007", "model.prm"), "w") as f:
-                f.write(model.replace("1e11", "2e11"))
-        before = tree(earlier)
-        cmd = [BINARY, os.path.join(HERE, name + ".prm")]
-        if name == "unwritable_output_directory":
-            # A directory below an earlier result file cannot be made.
-            cmd += ["--set", "Output directory=" + os.path.join(earlier, "solution.pvd", "new")]
-        else:
-            cmd += ["--set", "Output directory=" + earlier]
-        args = os.path.join(HERE, name + ".args")
-        if os.path.exists(args):
-            cmd += [a.replace("{here}", HERE) for a in open(args).read().splitlines() if a]
-        environment = env()
-        if ranks > 1:
-            cmd = ["mpirun", "-np", str(ranks)] + cmd
-            # Open MPI's own banner about a rank's non-zero exit (mpirun -q).
-            environment["OMPI_MCA_orte_execute_quiet"] = "1"
-        start = time.time()
-        try:
-            r = subprocess.run(cmd, capture_output=True, text=True, env=environment, timeout=120)
-        except subprocess.TimeoutExpired:
+        result = runs[(name, ranks)].result()
+        if result is None:
             check(False, "%s: ends (killed after 120 s: a hang)" % label)
             continue
-        seconds = time.time() - start
+        r, seconds, unchanged = result
         slowest = max(slowest, seconds)
         lines = [l for l in r.stderr.splitlines() if l.strip()]
         check(r.returncode == 1, "%s: exit status %d (expected 1; negative = signal)" % (label, r.returncode))
@@ -163,7 +180,7 @@ for name in files:
         check("Stacktrace" not in r.stderr and "An error occurred" not in r.stderr and
               "MPI_ABORT" not in r.stderr and "Signal" not in r.stderr, "%s: no stack trace, abort or signal" % label)
         check(seconds < 30, "%s: ends within seconds (%.1f s)" % (label, seconds))
-        check(tree(earlier) == before, "%s: earlier results byte-identical" % label)
+        check(unchanged, "%s: earlier results byte-identical" % label)
         messages.append(lines[0] if lines else "")
     # A memory estimate includes each rank's size, so it differs.
     if "would have about" not in expected[name] and "Memory limit" not in expected[name]:

@@ -103,38 +103,22 @@ namespace
         tria.execute_coarsening_and_refinement();
       }
   }
-} // namespace
 
-int
-main(int argc, char **argv)
-{
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm                   comm = MPI_COMM_WORLD;
-  const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+  using Operator = ElasticOperator<dim, degree, double>;
 
-  unsigned int failures = 0;
-  for (const bool rectangle : {false, true})
+  /** One test mesh with its DoFs, constraints and the assembled matrix. */
+  struct TestProblem
+  {
+    TestProblem(parallel::distributed::Triangulation<dim> &tria)
+        : comm(tria.get_communicator())
+        , rank(Utilities::MPI::this_mpi_process(comm))
+        , fe(FE_Q<dim>(degree), dim)
+        , mapping(2)
+        , dof_handler(tria)
     {
-      parallel::distributed::Triangulation<dim> tria(
-        comm,
-        Triangulation<dim>::limit_level_difference_at_vertices,
-        parallel::distributed::Triangulation<
-          dim>::construct_multigrid_hierarchy);
-      make_mesh(tria, rectangle);
-      if (rank == 0)
-        std::cout << (rectangle ? "rectangle (axis-parallel cells):"
-                                : "quarter annulus (curved cells):")
-                  << std::endl;
-
-      const FESystem<dim> fe(FE_Q<dim>(degree), dim);
-      const MappingQ<dim> mapping(2);
-      DoFHandler<dim>     dof_handler(tria);
       dof_handler.distribute_dofs(fe);
-      const IndexSet owned = dof_handler.locally_owned_dofs();
-      const IndexSet relevant =
-        DoFTools::extract_locally_relevant_dofs(dof_handler);
-
-      AffineConstraints<double> constraints;
+      owned    = dof_handler.locally_owned_dofs();
+      relevant = DoFTools::extract_locally_relevant_dofs(dof_handler);
       constraints.reinit(relevant);
       DoFTools::make_hanging_node_constraints(dof_handler, constraints);
       VectorTools::interpolate_boundary_values(mapping,
@@ -151,259 +135,353 @@ main(int argc, char **argv)
         constraints,
         ComponentMask(std::vector<bool>{true, false}));
       constraints.close();
-
-      for (const bool at_points : {false, true})
-        {
-          // Assembled matrix, independently of the operator.
-          TrilinosWrappers::SparsityPattern pattern(owned,
-                                                    owned,
-                                                    relevant,
-                                                    comm);
-          DoFTools::make_sparsity_pattern(
-            dof_handler, pattern, constraints, false, rank);
-          pattern.compress();
-          TrilinosWrappers::SparseMatrix matrix(pattern);
-
-          const QGauss<dim>                    quadrature(degree + 1);
-          const QGauss<dim - 1>                face_quadrature(degree + 1);
-          FEValues<dim>                        fe_values(mapping,
-                                  fe,
-                                  quadrature,
-                                  update_gradients | update_JxW_values |
-                                    update_quadrature_points);
-          FEFaceValues<dim>                    face_values(mapping,
-                                        fe,
-                                        face_quadrature,
-                                        update_values | update_normal_vectors |
-                                          update_JxW_values);
-          const FEValuesExtractors::Vector     u(0);
-          const unsigned int                   n = fe.n_dofs_per_cell();
-          FullMatrix<double>                   cell_matrix(n, n);
-          std::vector<types::global_dof_index> dofs(n);
-          for (const auto &cell : dof_handler.active_cell_iterators())
-            if (cell->is_locally_owned())
-              {
-                cell_matrix = 0;
-                fe_values.reinit(cell);
-                for (const unsigned int q :
-                     fe_values.quadrature_point_indices())
-                  {
-                    const LameParameters m =
-                      at_points ? point_moduli(cell->material_id(),
-                                               fe_values.quadrature_point(q))
-                                : material_moduli(cell->material_id());
-                    for (unsigned int i = 0; i < n; ++i)
-                      for (unsigned int j = 0; j < n; ++j)
-                        {
-                          const auto ei = fe_values[u].symmetric_gradient(i, q);
-                          const auto ej = fe_values[u].symmetric_gradient(j, q);
-                          cell_matrix(i, j) +=
-                            (m.lambda * trace(ei) * trace(ej) +
-                             2 * m.mu * (ei * ej)) *
-                            fe_values.JxW(q);
-                        }
-                  }
-                for (const unsigned int f : cell->face_indices())
-                  if (cell->at_boundary(f) &&
-                      springs.count(cell->face(f)->boundary_id()))
-                    {
-                      face_values.reinit(cell, f);
-                      const double k = springs.at(cell->face(f)->boundary_id());
-                      for (const unsigned int q :
-                           face_values.quadrature_point_indices())
-                        for (unsigned int i = 0; i < n; ++i)
-                          for (unsigned int j = 0; j < n; ++j)
-                            cell_matrix(i, j) +=
-                              k * std::abs(face_values.normal_vector(q)[1]) *
-                              face_values[u].value(i, q)[1] *
-                              face_values[u].value(j, q)[1] *
-                              face_values.JxW(q);
-                    }
-                cell->get_dof_indices(dofs);
-                constraints.distribute_local_to_global(cell_matrix,
-                                                       dofs,
-                                                       matrix);
-              }
-          matrix.compress(VectorOperation::add);
-
-          // The matrix-free operator on the same mesh and constraints.
-          using Operator = ElasticOperator<dim, degree, double>;
-          typename MatrixFree<dim, double>::AdditionalData data;
-          data.tasks_parallel_scheme =
-            MatrixFree<dim, double>::AdditionalData::none;
-          data.mapping_update_flags = update_gradients | update_JxW_values;
-          data.mapping_update_flags_boundary_faces =
-            update_values | update_normal_vectors | update_JxW_values;
-          auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
-          matrix_free->reinit(
-            mapping, dof_handler, constraints, QGauss<1>(degree + 1), data);
-          {
-            // Check of the check: the rectangle exercises the operator's
-            // path for axis-parallel cells, the annulus the general one.
-            unsigned int cartesian = 0;
-            for (unsigned int b = 0; b < matrix_free->n_cell_batches(); ++b)
-              cartesian += matrix_free->get_mapping_info().get_cell_type(b) ==
-                               internal::MatrixFreeFunctions::cartesian
-                             ? 1
-                             : 0;
-            const bool as_meant = rectangle
-                                    ? cartesian == matrix_free->n_cell_batches()
-                                    : cartesian < matrix_free->n_cell_batches();
-            failures += as_meant ? 0 : 1;
-            if (rank == 0 && !at_points)
-              std::cout << "axis-parallel cell batches: " << cartesian << " of "
-                        << matrix_free->n_cell_batches()
-                        << (as_meant ? "  ok" : "  FAILED") << std::endl;
-          }
-          Operator op;
-          op.initialize(matrix_free);
-          if (at_points)
-            {
-              FEValues<dim> points(mapping,
-                                   fe,
-                                   quadrature,
-                                   update_quadrature_points);
-              op.set_point_moduli(
-                [&](const typename Operator::CellIterator &cell,
-                    const unsigned int                     q) {
-                  points.reinit(cell);
-                  return point_moduli(cell->material_id(),
-                                      points.quadrature_point(q));
-                });
-            }
-          else
-            op.set_cell_moduli([](const typename Operator::CellIterator &cell) {
-              return material_moduli(cell->material_id());
-            });
-          op.set_vertical_springs(springs);
-
-          std::mt19937                           random(17 + rank);
-          std::uniform_real_distribution<double> uniform(-1, 1);
-          for (unsigned int trial = 0; trial < 3; ++trial)
-            {
-              LinearAlgebra::distributed::Vector<double> x, y;
-              op.initialize_dof_vector(x);
-              op.initialize_dof_vector(y);
-              TrilinosWrappers::MPI::Vector xt(owned, comm), yt(owned, comm);
-              for (const types::global_dof_index i : owned)
-                if (!constraints.is_constrained(i))
-                  {
-                    const double value = uniform(random);
-                    x(i)               = value;
-                    xt[i]              = value;
-                  }
-              xt.compress(VectorOperation::insert);
-              op.vmult(y, x);
-              matrix.vmult(yt, xt);
-              double difference = 0, norm = 0;
-              for (const types::global_dof_index i : owned)
-                if (!constraints.is_constrained(i))
-                  {
-                    difference = std::max(difference, std::abs(y(i) - yt[i]));
-                    norm       = std::max(norm, std::abs(yt[i]));
-                  }
-              difference = Utilities::MPI::max(difference, comm);
-              norm       = Utilities::MPI::max(norm, comm);
-
-              // Check of the check: the spring term matters in this product.
-              Operator without_springs;
-              without_springs.initialize(matrix_free);
-              without_springs.set_cell_moduli(
-                [](const typename Operator::CellIterator &cell) {
-                  return material_moduli(cell->material_id());
-                });
-              LinearAlgebra::distributed::Vector<double> z;
-              without_springs.initialize_dof_vector(z);
-              without_springs.vmult(z, x);
-              if (!at_points)
-                {
-                  z -= y;
-                  const double spring_part = z.linfty_norm() / norm;
-                  const bool   visible     = spring_part > 1e-2;
-                  failures += visible ? 0 : 1;
-                  if (rank == 0)
-                    std::cout << "springs change K x by " << spring_part
-                              << " of max |K x|"
-                              << (visible ? "  ok" : "  FAILED") << std::endl;
-                }
-              // The vectorised operator (moduli per cell, as the solver
-              // uses it) against the same matrix.
-              if (!at_points && vectorized_operator_built())
-                {
-                  const auto wide = make_active_operator<dim, degree>(
-                    mapping,
-                    dof_handler,
-                    constraints,
-                    [](const typename DoFHandler<dim>::cell_iterator &cell) {
-                      return material_moduli(cell->material_id());
-                    },
-                    springs,
-                    true);
-                  LinearAlgebra::distributed::Vector<double> xw, yw;
-                  wide->initialize_dof_vector(xw);
-                  wide->initialize_dof_vector(yw);
-                  for (const types::global_dof_index i : owned)
-                    xw(i) = x(i);
-                  wide->vmult(yw, xw);
-                  double wide_difference = 0;
-                  for (const types::global_dof_index i : owned)
-                    if (!constraints.is_constrained(i))
-                      wide_difference =
-                        std::max(wide_difference, std::abs(yw(i) - yt[i]));
-                  wide_difference = Utilities::MPI::max(wide_difference, comm);
-                  const bool wide_ok = wide_difference <= 1e-12 * norm &&
-                                       wide->cells_per_batch() > 1;
-                  failures += wide_ok ? 0 : 1;
-                  if (rank == 0)
-                    std::cout << "vectorised (" << wide->cells_per_batch()
-                              << " cells per batch), trial " << trial
-                              << ": max |K x - A x| / max |K x| = "
-                              << wide_difference / norm
-                              << (wide_ok ? "  ok" : "  FAILED") << std::endl;
-                }
-              // Round-off: both sum O(100) products of O(norm) terms per row in
-              // a different order; 1e-12 is ~5000 ulp of the largest entry.
-              const bool ok = difference <= 1e-12 * norm;
-              failures += ok ? 0 : 1;
-              if (rank == 0)
-                std::cout << (at_points ? "moduli at points"
-                                        : "moduli per cell ")
-                          << ", trial " << trial << ": " << dof_handler.n_dofs()
-                          << " DoFs, max |K x - A x| / max |K x| = "
-                          << difference / norm << (ok ? "  ok" : "  FAILED")
-                          << std::endl;
-            }
-
-          // The operator's diagonal (springs included) against the matrix's,
-          // on unconstrained DoFs that no hanging-node constraint refers to.
-          op.compute_diagonal();
-          const auto &inverse = op.get_matrix_diagonal_inverse()->get_vector();
-          IndexSet    masters(dof_handler.n_dofs());
-          for (const auto &line : constraints.get_lines())
-            for (const auto &entry : line.entries)
-              masters.add_index(entry.first);
-          double difference = 0, norm = 0;
-          for (const types::global_dof_index i : owned)
-            if (!constraints.is_constrained(i) && !masters.is_element(i))
-              {
-                difference =
-                  std::max(difference,
-                           std::abs(1. / inverse(i) - matrix.diag_element(i)));
-                norm = std::max(norm, std::abs(matrix.diag_element(i)));
-              }
-          difference    = Utilities::MPI::max(difference, comm);
-          norm          = Utilities::MPI::max(norm, comm);
-          const bool ok = difference <= 1e-12 * norm;
-          failures += ok ? 0 : 1;
-          if (rank == 0)
-            std::cout << (at_points ? "moduli at points" : "moduli per cell ")
-                      << ", diagonal: max difference / max entry = "
-                      << difference / norm << (ok ? "  ok" : "  FAILED")
-                      << std::endl;
-        }
     }
+
+    MPI_Comm                       comm;
+    unsigned int                   rank;
+    FESystem<dim>                  fe;
+    MappingQ<dim>                  mapping;
+    DoFHandler<dim>                dof_handler;
+    IndexSet                       owned, relevant;
+    AffineConstraints<double>      constraints;
+    TrilinosWrappers::SparseMatrix matrix;
+  };
+
+  /** The cell matrix of elasticity and the springs, with FEValues. */
+  void
+  cell_matrix(const typename DoFHandler<dim>::active_cell_iterator &cell,
+              FEValues<dim>                                        &fe_values,
+              FEFaceValues<dim>                                    &face_values,
+              const bool                                            at_points,
+              FullMatrix<double>                                   &matrix)
+  {
+    const FEValuesExtractors::Vector u(0);
+    const unsigned int               n = matrix.m();
+    matrix                             = 0;
+    fe_values.reinit(cell);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const LameParameters m =
+          at_points
+            ? point_moduli(cell->material_id(), fe_values.quadrature_point(q))
+            : material_moduli(cell->material_id());
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            {
+              const auto ei = fe_values[u].symmetric_gradient(i, q);
+              const auto ej = fe_values[u].symmetric_gradient(j, q);
+              matrix(i, j) +=
+                (m.lambda * trace(ei) * trace(ej) + 2 * m.mu * (ei * ej)) *
+                fe_values.JxW(q);
+            }
+      }
+    for (const unsigned int f : cell->face_indices())
+      if (cell->at_boundary(f) && springs.count(cell->face(f)->boundary_id()))
+        {
+          face_values.reinit(cell, f);
+          const double k = springs.at(cell->face(f)->boundary_id());
+          for (const unsigned int q : face_values.quadrature_point_indices())
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < n; ++j)
+                matrix(i, j) += k * std::abs(face_values.normal_vector(q)[1]) *
+                                face_values[u].value(i, q)[1] *
+                                face_values[u].value(j, q)[1] *
+                                face_values.JxW(q);
+        }
+  }
+
+  /** The matrix assembled here, independently of the operator. */
+  void
+  assemble_matrix(TestProblem &problem, const bool at_points)
+  {
+    TrilinosWrappers::SparsityPattern pattern(problem.owned,
+                                              problem.owned,
+                                              problem.relevant,
+                                              problem.comm);
+    DoFTools::make_sparsity_pattern(
+      problem.dof_handler, pattern, problem.constraints, false, problem.rank);
+    pattern.compress();
+    problem.matrix.reinit(pattern);
+    const QGauss<dim>                    quadrature(degree + 1);
+    const QGauss<dim - 1>                face_quadrature(degree + 1);
+    FEValues<dim>                        fe_values(problem.mapping,
+                            problem.fe,
+                            quadrature,
+                            update_gradients | update_JxW_values |
+                              update_quadrature_points);
+    FEFaceValues<dim>                    face_values(problem.mapping,
+                                  problem.fe,
+                                  face_quadrature,
+                                  update_values | update_normal_vectors |
+                                    update_JxW_values);
+    const unsigned int                   n = problem.fe.n_dofs_per_cell();
+    FullMatrix<double>                   local(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    for (const auto &cell : problem.dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_matrix(cell, fe_values, face_values, at_points, local);
+          cell->get_dof_indices(dofs);
+          problem.constraints.distribute_local_to_global(local,
+                                                         dofs,
+                                                         problem.matrix);
+        }
+    problem.matrix.compress(VectorOperation::add);
+  }
+
+  /** Check of the check: the rectangle exercises the operator's path for
+   * axis-parallel cells, the annulus the general one. */
+  unsigned int
+  check_cell_batches(const MatrixFree<dim, double> &matrix_free,
+                     const bool                     rectangle,
+                     const bool                     print)
+  {
+    unsigned int cartesian = 0;
+    for (unsigned int b = 0; b < matrix_free.n_cell_batches(); ++b)
+      cartesian += matrix_free.get_mapping_info().get_cell_type(b) ==
+                       internal::MatrixFreeFunctions::cartesian
+                     ? 1
+                     : 0;
+    const bool as_meant = rectangle ? cartesian == matrix_free.n_cell_batches()
+                                    : cartesian < matrix_free.n_cell_batches();
+    if (print)
+      std::cout << "axis-parallel cell batches: " << cartesian << " of "
+                << matrix_free.n_cell_batches()
+                << (as_meant ? "  ok" : "  FAILED") << std::endl;
+    return as_meant ? 0 : 1;
+  }
+
+  /** The matrix-free operator on the test problem's mesh and constraints. */
+  std::shared_ptr<MatrixFree<dim, double>>
+  make_matrix_free(const TestProblem &problem)
+  {
+    typename MatrixFree<dim, double>::AdditionalData data;
+    data.tasks_parallel_scheme = MatrixFree<dim, double>::AdditionalData::none;
+    data.mapping_update_flags  = update_gradients | update_JxW_values;
+    data.mapping_update_flags_boundary_faces =
+      update_values | update_normal_vectors | update_JxW_values;
+    auto matrix_free = std::make_shared<MatrixFree<dim, double>>();
+    matrix_free->reinit(problem.mapping,
+                        problem.dof_handler,
+                        problem.constraints,
+                        QGauss<1>(degree + 1),
+                        data);
+    return matrix_free;
+  }
+
+  /** The largest difference on unconstrained owned DoFs, over all ranks. */
+  template <typename VectorA, typename VectorB>
+  double
+  max_difference(const TestProblem &problem, const VectorA &a, const VectorB &b)
+  {
+    double difference = 0;
+    for (const types::global_dof_index i : problem.owned)
+      if (!problem.constraints.is_constrained(i))
+        difference = std::max(difference, std::abs(a(i) - b(i)));
+    return Utilities::MPI::max(difference, problem.comm);
+  }
+
+  /** Check of the check: the spring term matters in the product K x. */
+  unsigned int
+  check_springs_visible(
+    const std::shared_ptr<MatrixFree<dim, double>>   &matrix_free,
+    const LinearAlgebra::distributed::Vector<double> &x,
+    const LinearAlgebra::distributed::Vector<double> &y,
+    const double                                      norm,
+    const bool                                        print)
+  {
+    Operator without_springs;
+    without_springs.initialize(matrix_free);
+    without_springs.set_cell_moduli(
+      [](const typename Operator::CellIterator &cell) {
+        return material_moduli(cell->material_id());
+      });
+    LinearAlgebra::distributed::Vector<double> z;
+    without_springs.initialize_dof_vector(z);
+    without_springs.vmult(z, x);
+    z -= y;
+    const double spring_part = z.linfty_norm() / norm;
+    const bool   visible     = spring_part > 1e-2;
+    if (print)
+      std::cout << "springs change K x by " << spring_part << " of max |K x|"
+                << (visible ? "  ok" : "  FAILED") << std::endl;
+    return visible ? 0 : 1;
+  }
+
+  /** The vectorised operator (moduli per cell, as the solver uses it)
+   * against the assembled matrix's product @p yt with @p x. */
+  unsigned int
+  check_vectorised(const TestProblem                                &problem,
+                   const LinearAlgebra::distributed::Vector<double> &x,
+                   const TrilinosWrappers::MPI::Vector              &yt,
+                   const double                                      norm,
+                   const unsigned int                                trial)
+  {
+    const auto wide = make_active_operator<dim, degree>(
+      problem.mapping,
+      problem.dof_handler,
+      problem.constraints,
+      [](const typename DoFHandler<dim>::cell_iterator &cell) {
+        return material_moduli(cell->material_id());
+      },
+      springs,
+      true);
+    LinearAlgebra::distributed::Vector<double> xw, yw;
+    wide->initialize_dof_vector(xw);
+    wide->initialize_dof_vector(yw);
+    for (const types::global_dof_index i : problem.owned)
+      xw(i) = x(i);
+    wide->vmult(yw, xw);
+    const double difference = max_difference(problem, yw, yt);
+    const bool   ok = difference <= 1e-12 * norm && wide->cells_per_batch() > 1;
+    if (problem.rank == 0)
+      std::cout << "vectorised (" << wide->cells_per_batch()
+                << " cells per batch), trial " << trial
+                << ": max |K x - A x| / max |K x| = " << difference / norm
+                << (ok ? "  ok" : "  FAILED") << std::endl;
+    return ok ? 0 : 1;
+  }
+
+  /** Products of the operator and of the matrix with random vectors. */
+  unsigned int
+  check_products(const TestProblem                              &problem,
+                 const Operator                                 &op,
+                 const std::shared_ptr<MatrixFree<dim, double>> &matrix_free,
+                 const bool                                      at_points)
+  {
+    unsigned int                           failures = 0;
+    std::mt19937                           random(17 + problem.rank);
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    for (unsigned int trial = 0; trial < 3; ++trial)
+      {
+        LinearAlgebra::distributed::Vector<double> x, y;
+        op.initialize_dof_vector(x);
+        op.initialize_dof_vector(y);
+        TrilinosWrappers::MPI::Vector xt(problem.owned, problem.comm),
+          yt(problem.owned, problem.comm);
+        for (const types::global_dof_index i : problem.owned)
+          if (!problem.constraints.is_constrained(i))
+            {
+              const double value = uniform(random);
+              x(i)               = value;
+              xt[i]              = value;
+            }
+        xt.compress(VectorOperation::insert);
+        op.vmult(y, x);
+        problem.matrix.vmult(yt, xt);
+        const double difference = max_difference(problem, y, yt);
+        const double norm = Utilities::MPI::max(yt.linfty_norm(), problem.comm);
+        if (!at_points)
+          {
+            failures +=
+              check_springs_visible(matrix_free, x, y, norm, problem.rank == 0);
+            if (vectorized_operator_built())
+              failures += check_vectorised(problem, x, yt, norm, trial);
+          }
+        // Round-off: both sum O(100) products of O(norm) terms per row in
+        // a different order; 1e-12 is ~5000 ulp of the largest entry.
+        const bool ok = difference <= 1e-12 * norm;
+        failures += ok ? 0 : 1;
+        if (problem.rank == 0)
+          std::cout << (at_points ? "moduli at points" : "moduli per cell ")
+                    << ", trial " << trial << ": "
+                    << problem.dof_handler.n_dofs()
+                    << " DoFs, max |K x - A x| / max |K x| = "
+                    << difference / norm << (ok ? "  ok" : "  FAILED")
+                    << std::endl;
+      }
+    return failures;
+  }
+
+  /** The operator's diagonal (springs included) against the matrix's, on
+   * unconstrained DoFs that no hanging-node constraint refers to. */
+  unsigned int
+  check_diagonal(const TestProblem &problem, Operator &op, const bool at_points)
+  {
+    op.compute_diagonal();
+    const auto &inverse = op.get_matrix_diagonal_inverse()->get_vector();
+    IndexSet    masters(problem.dof_handler.n_dofs());
+    for (const auto &line : problem.constraints.get_lines())
+      for (const auto &entry : line.entries)
+        masters.add_index(entry.first);
+    double difference = 0, norm = 0;
+    for (const types::global_dof_index i : problem.owned)
+      if (!problem.constraints.is_constrained(i) && !masters.is_element(i))
+        {
+          difference = std::max(difference,
+                                std::abs(1. / inverse(i) -
+                                         problem.matrix.diag_element(i)));
+          norm       = std::max(norm, std::abs(problem.matrix.diag_element(i)));
+        }
+    difference    = Utilities::MPI::max(difference, problem.comm);
+    norm          = Utilities::MPI::max(norm, problem.comm);
+    const bool ok = difference <= 1e-12 * norm;
+    if (problem.rank == 0)
+      std::cout << (at_points ? "moduli at points" : "moduli per cell ")
+                << ", diagonal: max difference / max entry = "
+                << difference / norm << (ok ? "  ok" : "  FAILED") << std::endl;
+    return ok ? 0 : 1;
+  }
+
+  /** Every check on one mesh, with moduli per cell and at points. */
+  unsigned int
+  check_mesh(const MPI_Comm comm, const bool rectangle)
+  {
+    parallel::distributed::Triangulation<dim> tria(
+      comm,
+      Triangulation<dim>::limit_level_difference_at_vertices,
+      parallel::distributed::Triangulation<dim>::construct_multigrid_hierarchy);
+    make_mesh(tria, rectangle);
+    TestProblem problem(tria);
+    if (problem.rank == 0)
+      std::cout << (rectangle ? "rectangle (axis-parallel cells):"
+                              : "quarter annulus (curved cells):")
+                << std::endl;
+    unsigned int failures = 0;
+    for (const bool at_points : {false, true})
+      {
+        assemble_matrix(problem, at_points);
+        const auto matrix_free = make_matrix_free(problem);
+        failures += check_cell_batches(*matrix_free,
+                                       rectangle,
+                                       problem.rank == 0 && !at_points);
+        Operator op;
+        op.initialize(matrix_free);
+        if (at_points)
+          {
+            FEValues<dim> points(problem.mapping,
+                                 problem.fe,
+                                 QGauss<dim>(degree + 1),
+                                 update_quadrature_points);
+            op.set_point_moduli([&](const typename Operator::CellIterator &cell,
+                                    const unsigned int                     q) {
+              points.reinit(cell);
+              return point_moduli(cell->material_id(),
+                                  points.quadrature_point(q));
+            });
+          }
+        else
+          op.set_cell_moduli([](const typename Operator::CellIterator &cell) {
+            return material_moduli(cell->material_id());
+          });
+        op.set_vertical_springs(springs);
+        failures += check_products(problem, op, matrix_free, at_points);
+        failures += check_diagonal(problem, op, at_points);
+      }
+    return failures;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                   comm     = MPI_COMM_WORLD;
+  unsigned int                     failures = 0;
+  for (const bool rectangle : {false, true})
+    failures += check_mesh(comm, rectangle);
   failures = Utilities::MPI::max(failures, comm);
-  if (rank == 0)
+  if (Utilities::MPI::this_mpi_process(comm) == 0)
     std::cout << (failures == 0 ? "PASSED" : "FAILED") << std::endl;
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -13,7 +13,7 @@
 #include <lithostress/base/gravity_field.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/faults/coulomb_friction.h>
-#include <lithostress/faults/fault_trace.h>
+#include <lithostress/geometry/fault_trace.h>
 
 #include <array>
 #include <functional>

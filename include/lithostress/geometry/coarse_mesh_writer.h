@@ -3,7 +3,7 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <lithostress/faults/fault_trace.h>
+#include <lithostress/geometry/fault_trace.h>
 
 #include <map>
 #include <string>

@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
-#include <lithostress/faults/fault_trace.h>
+#include <lithostress/geometry/fault_trace.h>
 
 #include <map>
 #include <memory>

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <lithostress/base/output_file.h>
-#include <lithostress/faults/fault_output.h>
+#include <lithostress/postprocess/fault_output.h>
 #include <lithostress/postprocess/stress_sampling.h>
 #include <lithostress/postprocess/surface_profile.h>
 

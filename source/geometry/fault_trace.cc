@@ -1,4 +1,4 @@
-#include <lithostress/faults/fault_trace.h>
+#include <lithostress/geometry/fault_trace.h>
 
 #include <cmath>
 #include <limits>

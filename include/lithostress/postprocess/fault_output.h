@@ -1,5 +1,5 @@
-#ifndef lithostress_faults_fault_output_h
-#define lithostress_faults_fault_output_h
+#ifndef lithostress_postprocess_fault_output_h
+#define lithostress_postprocess_fault_output_h
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>

@@ -1,5 +1,5 @@
-#ifndef lithostress_faults_fault_trace_h
-#define lithostress_faults_fault_trace_h
+#ifndef lithostress_geometry_fault_trace_h
+#define lithostress_geometry_fault_trace_h
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
