@@ -65,4 +65,47 @@ namespace lithostress
       }
     return r;
   }
+
+  CoulombFriction::Response
+  CoulombFriction::respond_in_contact(const double w_s,
+                                      const double t_n,
+                                      const bool   closed,
+                                      const double p_old,
+                                      const double depth) const
+  {
+    Response r;
+    r.normal_traction         = closed ? t_n : overburden(depth);
+    r.effective_normal_stress = r.normal_traction - overburden(depth);
+    r.friction_limit =
+      friction_coefficient * std::max(0.0, -r.effective_normal_stress);
+    const double trial_s = shear_stiffness * (w_s - p_old);
+    if (!slides)
+      {
+        r.state          = SlipState::stuck;
+        r.shear_traction = trial_s;
+        r.plastic_slip   = p_old;
+        r.tangent[0][0]  = shear_stiffness;
+      }
+    else if (!closed || r.effective_normal_stress >= 0)
+      {
+        r.state          = SlipState::open;
+        r.shear_traction = 0;
+        r.plastic_slip   = w_s;
+      }
+    else if (std::abs(trial_s) <= r.friction_limit)
+      {
+        r.state          = SlipState::stuck;
+        r.shear_traction = trial_s;
+        r.plastic_slip   = p_old;
+        r.tangent[0][0]  = shear_stiffness;
+      }
+    else
+      {
+        const double sign = trial_s > 0 ? 1. : -1.;
+        r.state           = SlipState::sliding;
+        r.shear_traction  = sign * r.friction_limit;
+        r.plastic_slip    = w_s - r.shear_traction / shear_stiffness;
+      }
+    return r;
+  }
 } // namespace lithostress

@@ -9,6 +9,45 @@
 
 namespace lithostress
 {
+  namespace
+  {
+    /** The node at an interface point on the side exact contact constrains
+     * (field 1 where it has one there, else field 0; PointValues::node):
+     * the DoFs whose shape functions' jumps @p jump are ±e_d there (a
+     * Lobatto point is a node of the finer side), of the field-1 DoFs
+     * [@p n_minus, n) first. Returns the sign of those jumps (0: no node). */
+    template <int dim>
+    double
+    find_node(const std::vector<Tensor<1, dim>>          &jump,
+              const std::vector<types::global_dof_index> &dofs,
+              const unsigned int                          n_minus,
+              std::array<types::global_dof_index, dim>   &node)
+    {
+      const unsigned int n = jump.size();
+      for (const bool field_1 : {true, false})
+        {
+          node.fill(numbers::invalid_dof_index);
+          double       sign  = 0;
+          unsigned int found = 0;
+          for (unsigned int i = field_1 ? n_minus : 0;
+               i < (field_1 ? n : n_minus);
+               ++i)
+            for (unsigned int d = 0; d < dim; ++d)
+              if (std::abs(std::abs(jump[i][d]) - 1) < 1e-10 &&
+                  node[d] == numbers::invalid_dof_index)
+                {
+                  node[d] = dofs[i];
+                  sign    = jump[i][d] > 0 ? 1 : -1;
+                  ++found;
+                }
+          if (found == dim)
+            return sign;
+        }
+      node.fill(numbers::invalid_dof_index);
+      return 0;
+    }
+  } // namespace
+
   template <int dim>
   FaultInterface<dim>::FaceTerms::FaceTerms(
     const FiniteElementSpace<dim> &fe_space)
@@ -129,9 +168,10 @@ namespace lithostress
     Vector<double>                       values(n);
     std::vector<types::global_dof_index> dofs(n), minus_dofs(n_minus),
       plus_dofs(n_plus);
-    std::vector<Tensor<1, dim>> jump(n);
-    const unsigned int          none  = numbers::invalid_unsigned_int;
-    unsigned int                index = 0;
+    std::vector<Tensor<1, dim>>              jump(n);
+    std::array<types::global_dof_index, dim> node;
+    const unsigned int none  = numbers::invalid_unsigned_int;
+    unsigned int       index = 0;
     // The finer side's whole face, the coarser side's subface.
     const auto reinit =
       [none](auto              &face,
@@ -200,8 +240,15 @@ namespace lithostress
             Tensor<1, dim> w;
             for (unsigned int i = 0; i < n; ++i)
               w += values[i] * jump[i];
-            visitor(PointValues{
-              index++, point, w, dofs, jump, q + 1 == m->n_quadrature_points});
+            const double node_sign = find_node<dim>(jump, dofs, n_minus, node);
+            visitor(PointValues{index++,
+                                point,
+                                w,
+                                dofs,
+                                jump,
+                                q + 1 == m->n_quadrature_points,
+                                node,
+                                node_sign});
           }
       });
   }
@@ -230,8 +277,9 @@ namespace lithostress
                                 TrilinosWrappers::SparseMatrix  *matrix,
                                 TrilinosWrappers::MPI::Vector   &rhs) const
   {
-    // With a frictional fault the sliding solver adds every face term.
-    if (!has_face_terms() || frictional())
+    // With a frictional fault or exact contact the sliding solver adds
+    // every face term.
+    if (!has_face_terms() || needs_sliding_solver())
       return;
     // The elastic law t = D w is linear: no affine part, only the tangent,
     // whose product with the constraints' inhomogeneities goes to the

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <set>
 
 // FaultInterface's constraints: locked faults and prescribed slip, exact
 // (thesis chapter 5's locked fault without its k = 1e15 N/m penalty).
@@ -69,9 +70,24 @@ namespace lithostress
       using Jump =
         std::function<double(const Point<dim> &x, const unsigned int d)>;
 
+      /** A node where the normal jump only is tied (exact contact) is
+       * skipped if this says it is open; its argument is the node's key,
+       * the x DoF of the constrained side's node there. */
+      using IsOpen = typename FaultInterface<dim>::ContactState;
+
       /** For the two fields of @p fe_space, adding to @p constraints. */
       FaceNodeConstraints(const FiniteElementSpace<dim> &fe_space,
                           AffineConstraints<double>     &constraints);
+
+      /** From now on tie only the jump's component along the fault's
+       * normal (given by @p trace at each node) to zero, at the nodes that
+       * @p is_open does not call open (exact normal contact). */
+      void
+      normal_only(const FaultTrace *trace, const IsOpen &is_open)
+      {
+        contact_trace = trace;
+        open          = is_open;
+      }
 
       /** Face @p f of the field-0 cell @p cell, whose field-1 neighbour
        * has its level: field 1 := field 0 + jump at every node. */
@@ -111,6 +127,16 @@ namespace lithostress
                 const Entries                &entries,
                 const double                  inhomogeneity);
 
+      /** The node at @p x whose DoFs are @p targets: each component d :=
+       * @p sources[d] + @p jumps[d]; with normal_only() the normal
+       * component of the jump only, n·(targets − sources) = 0, as one
+       * constraint on the component along which n is largest. */
+      void
+      tie(const Point<dim>                               &x,
+          const std::array<types::global_dof_index, dim> &targets,
+          const std::array<Entries, dim>                 &sources,
+          const std::array<double, dim>                  &jumps);
+
       /** The nodes of @p face in the order of the scalar element's face
        * DoFs: the vertices, then (Q2) the midpoint on the face's manifold. */
       std::vector<Point<dim>>
@@ -127,6 +153,10 @@ namespace lithostress
       std::array<FullMatrix<double>, GeometryInfo<dim>::max_children_per_face>
                                            subface;
       std::vector<types::global_dof_index> dofs_0, dofs_1;
+      const FaultTrace                    *contact_trace = nullptr;
+      IsOpen                               open;
+      /** The nodes tied by normal_only() so far (their keys). */
+      std::set<types::global_dof_index> tied;
     };
 
     template <int dim>
@@ -166,6 +196,49 @@ namespace lithostress
     }
 
     template <int dim>
+    void
+    FaceNodeConstraints<dim>::tie(
+      const Point<dim>                               &x,
+      const std::array<types::global_dof_index, dim> &targets,
+      const std::array<Entries, dim>                 &sources,
+      const std::array<double, dim>                  &jumps)
+    {
+      if (!contact_trace)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            constrain(targets[d], sources[d], jumps[d]);
+          return;
+        }
+      // A node is tied once, by the first face that has it (a second face
+      // would choose another component and close a cycle).
+      if ((open && open(targets[0])) || !tied.insert(targets[0]).second)
+        return;
+      // n·(u_target − u_source) = 0 solved for the component c along which
+      // n is largest (of those still free): u_c = source_c +
+      // Σ_{d≠c} (n_d / n_c) (source_d − u_d).
+      const Tensor<1, dim> n = contact_trace->hanging_wall_normal(x);
+      unsigned int         c = numbers::invalid_unsigned_int;
+      for (unsigned int d = 0; d < dim; ++d)
+        if (constraints.can_store_line(targets[d]) &&
+            !constraints.is_constrained(targets[d]) && std::abs(n[d]) > 0.2 &&
+            (c == numbers::invalid_unsigned_int ||
+             std::abs(n[d]) > std::abs(n[c])))
+          c = d;
+      if (c == numbers::invalid_unsigned_int)
+        return;
+      Entries entries = sources[c];
+      for (unsigned int d = 0; d < dim; ++d)
+        if (d != c)
+          {
+            const double ratio = n[d] / n[c];
+            for (const auto &[dof, weight] : sources[d])
+              entries.emplace_back(dof, ratio * weight);
+            entries.emplace_back(targets[d], -ratio);
+          }
+      constrain(targets[c], entries, 0);
+    }
+
+    template <int dim>
     std::vector<Point<dim>>
     FaceNodeConstraints<dim>::node_positions(const face_iterator &face) const
     {
@@ -186,11 +259,19 @@ namespace lithostress
       cell->face(f)->get_dof_indices(dofs_0, 0);
       cell->face(f)->get_dof_indices(dofs_1, 1);
       const auto x = node_positions(cell->face(f));
-      for (unsigned int d = 0; d < dim; ++d)
-        for (unsigned int j = 0; j < n_nodes; ++j)
-          constrain(dofs_1[table[1][d][j]],
-                    {{dofs_0[table[0][d][j]], 1.0}},
-                    jump(x[j], d));
+      for (unsigned int j = 0; j < n_nodes; ++j)
+        {
+          std::array<types::global_dof_index, dim> targets;
+          std::array<Entries, dim>                 sources;
+          std::array<double, dim>                  jumps;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              targets[d] = dofs_1[table[1][d][j]];
+              sources[d] = {{dofs_0[table[0][d][j]], 1.0}};
+              jumps[d]   = jump(x[j], d);
+            }
+          tie(x[j], targets, sources, jumps);
+        }
     }
 
     template <int dim>
@@ -205,15 +286,21 @@ namespace lithostress
       const auto                x = node_positions(cell->face(f));
       coarse_face->get_dof_indices(dofs_0, 0);
       cell->face(f)->get_dof_indices(dofs_1, 1);
-      for (unsigned int d = 0; d < dim; ++d)
-        for (unsigned int j = 0; j < n_nodes; ++j)
-          {
-            Entries entries;
-            for (unsigned int i = 0; i < n_nodes; ++i)
-              if (std::abs(m(j, i)) > 1e-14)
-                entries.emplace_back(dofs_0[table[0][d][i]], m(j, i));
-            constrain(dofs_1[table[1][d][j]], entries, jump(x[j], d));
-          }
+      for (unsigned int j = 0; j < n_nodes; ++j)
+        {
+          std::array<types::global_dof_index, dim> targets;
+          std::array<Entries, dim>                 sources;
+          std::array<double, dim>                  jumps;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              targets[d] = dofs_1[table[1][d][j]];
+              for (unsigned int i = 0; i < n_nodes; ++i)
+                if (std::abs(m(j, i)) > 1e-14)
+                  sources[d].emplace_back(dofs_0[table[0][d][i]], m(j, i));
+              jumps[d] = jump(x[j], d);
+            }
+          tie(x[j], targets, sources, jumps);
+        }
     }
 
     template <int dim>
@@ -228,23 +315,30 @@ namespace lithostress
       const auto                x = node_positions(cell->face(f));
       coarse_face->get_dof_indices(dofs_1, 1);
       cell->face(f)->get_dof_indices(dofs_0, 0);
-      for (unsigned int d = 0; d < dim; ++d)
-        for (unsigned int j = 0; j < n_nodes; ++j)
-          {
-            unsigned int i = 0;
-            if (unit_row(m, j, i))
-              constrain(dofs_1[table[1][d][i]],
-                        {{dofs_0[table[0][d][j]], 1.0}},
-                        jump(x[j], d));
+      for (unsigned int j = 0; j < n_nodes; ++j)
+        {
+          std::array<types::global_dof_index, dim> targets;
+          std::array<Entries, dim>                 sources;
+          std::array<double, dim>                  jumps;
+          unsigned int                             i = 0;
+          const bool coincides                       = unit_row(m, j, i);
+          for (unsigned int d = 0; d < dim; ++d)
+            if (coincides)
+              {
+                targets[d] = dofs_1[table[1][d][i]];
+                sources[d] = {{dofs_0[table[0][d][j]], 1.0}};
+                jumps[d]   = jump(x[j], d);
+              }
             else
               {
-                Entries entries;
+                targets[d] = dofs_0[table[0][d][j]];
                 for (unsigned int c = 0; c < n_nodes; ++c)
                   if (std::abs(m(j, c)) > 1e-14)
-                    entries.emplace_back(dofs_1[table[1][d][c]], m(j, c));
-                constrain(dofs_0[table[0][d][j]], entries, -jump(x[j], d));
+                    sources[d].emplace_back(dofs_1[table[1][d][c]], m(j, c));
+                jumps[d] = -jump(x[j], d);
               }
-          }
+          tie(x[j], targets, sources, jumps);
+        }
     }
   } // namespace
 
@@ -255,11 +349,51 @@ namespace lithostress
                                        AffineConstraints<double> &constraints,
                                        const double               time) const
   {
-    bool with_constraints = false;
+    tie_faces(
+      dof_handler,
+      fe_space,
+      constraints,
+      time,
+      [](const Fault &fault) {
+        return fault.law == Law::locked || fault.law == Law::prescribed_slip;
+      },
+      nullptr);
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::add_contact_constraints(
+    const DoFHandler<dim>         &dof_handler,
+    const FiniteElementSpace<dim> &fe_space,
+    AffineConstraints<double>     &constraints,
+    const ContactState            &is_open) const
+  {
+    tie_faces(
+      dof_handler,
+      fe_space,
+      constraints,
+      0,
+      [](const Fault &fault) {
+        return (fault.law == Law::elastic || fault.law == Law::frictional) &&
+               fault.friction.exact_contact;
+      },
+      &is_open);
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::tie_faces(
+    const DoFHandler<dim>                    &dof_handler,
+    const FiniteElementSpace<dim>            &fe_space,
+    AffineConstraints<double>                &constraints,
+    const double                              time,
+    const std::function<bool(const Fault &)> &which,
+    const ContactState                       *contact) const
+  {
+    bool any = false;
     for (const Fault &fault : faults)
-      with_constraints = with_constraints || fault.law == Law::locked ||
-                         fault.law == Law::prescribed_slip;
-    if (!with_constraints)
+      any = any || which(fault);
+    if (!any)
       return;
     // The prescribed jump u(hanging wall) - u(footwall) of fault @p fault,
     // component d, at a node x of one of its faces whose normal into the
@@ -307,10 +441,11 @@ namespace lithostress
                 neighbor->active_fe_index() == side)
               continue;
             const int k = fault_of(cell, f);
-            if (k < 0 || (faults[k].law != Law::locked &&
-                          faults[k].law != Law::prescribed_slip))
+            if (k < 0 || !which(faults[k]))
               continue;
             const Fault &fault = faults[k];
+            face_constraints.normal_only(contact ? &fault.trace : nullptr,
+                                         contact ? *contact : ContactState());
             // The jump of the fields, u(field 1) - u(field 0).
             const double sign = field_1_sign(cell, f, fault.trace);
             const auto   n =
@@ -345,4 +480,9 @@ namespace lithostress
                                      const FiniteElementSpace<2> &,
                                      AffineConstraints<double> &,
                                      const double) const;
+  template void
+  FaultInterface<2>::add_contact_constraints(const DoFHandler<2> &,
+                                             const FiniteElementSpace<2> &,
+                                             AffineConstraints<double> &,
+                                             const ContactState &) const;
 } // namespace lithostress

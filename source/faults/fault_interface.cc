@@ -3,6 +3,7 @@
 #include <lithostress/faults/fault_interface.h>
 
 #include <algorithm>
+#include <cctype>
 #include <map>
 
 // FaultInterface's parameters and queries; the topology is in
@@ -64,11 +65,17 @@ namespace lithostress
                           "the shear traction per metre of slip. The "
                           "thesis's element stiffness [N/m] is k_s times "
                           "its fault element's length (thesis §5.4).");
-        prm.declare_entry("Normal stiffness",
-                          "",
-                          Patterns::Anything(),
-                          "k_n per unit fault area [Pa/m] (elastic law): "
-                          "the normal traction per metre of opening.");
+        prm.declare_entry(
+          "Normal stiffness",
+          "exact",
+          Patterns::Anything(),
+          "exact = exact normal contact (elastic and frictional laws): "
+          "the two sides neither open nor interpenetrate where the fault "
+          "is in compression (constraints on the normal jump, whose "
+          "reactions are the normal traction), and a frictional fault "
+          "opens where the normal traction would be tensile; or k_n per "
+          "unit fault area [Pa/m]: the thesis's normal spring (thesis "
+          "§5.4), the normal traction per metre of opening.");
         prm.declare_entry("Thesis element length",
                           "",
                           Patterns::Anything(),
@@ -183,7 +190,19 @@ namespace lithostress
           {
             CoulombFriction &f = fault.friction;
             f.shear_stiffness  = number("Shear stiffness", 0, false);
-            f.normal_stiffness = number("Normal stiffness", 0, false);
+            f.exact_contact =
+              Utilities::trim(prm.get("Normal stiffness")) == "exact";
+            const std::string normal =
+              Utilities::trim(prm.get("Normal stiffness"));
+            if (!f.exact_contact && !normal.empty() &&
+                !std::isdigit(static_cast<unsigned char>(normal[0])) &&
+                normal[0] != '.' && normal[0] != '+' && normal[0] != '-')
+              throw_input_error(entry("Normal stiffness"),
+                                "must be `exact` or a stiffness per unit "
+                                "area [Pa/m], got <" +
+                                  normal + ">");
+            if (!f.exact_contact)
+              f.normal_stiffness = number("Normal stiffness", 0, false);
             const std::string length =
               Utilities::trim(prm.get("Thesis element length"));
             if (!length.empty())
@@ -230,16 +249,26 @@ namespace lithostress
   }
 
   template <int dim>
+  bool
+  FaultInterface<dim>::contact() const
+  {
+    for (const Fault &fault : faults)
+      if ((fault.law == Law::elastic || fault.law == Law::frictional) &&
+          fault.friction.exact_contact)
+        return true;
+    return false;
+  }
+
+  template <int dim>
   std::string
   FaultInterface<dim>::frictional_names() const
   {
     std::string  names;
     unsigned int n = 0;
     for (const Fault &fault : faults)
-      if (fault.law == Law::frictional)
-        {
-          names += (n++ == 0 ? "<" : ", <") + fault.trace.name + ">";
-        }
+      if (fault.law == Law::frictional ||
+          (fault.law == Law::elastic && fault.friction.exact_contact))
+        names += (n++ == 0 ? "<" : ", <") + fault.trace.name + ">";
     return (n > 1 ? "faults " : "fault ") + names;
   }
 

@@ -80,5 +80,6 @@ namespace lithostress
       }
     trial_slip   = slip;
     trial_states = states;
+    normal_traction.assign(slip.size(), 0.);
   }
 } // namespace lithostress

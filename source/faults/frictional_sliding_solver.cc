@@ -1,14 +1,17 @@
 #include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/faults/frictional_sliding_solver.h>
+#include <lithostress/faults/normal_contact.h>
 #include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/rigid_body_modes.h>
 
@@ -163,6 +166,31 @@ namespace lithostress
                      Tensor<1, dim>    &t,
                      Tensor<2, dim>    &D);
 
+      /** The Coulomb law at the point @p values from the slip @p p_old:
+       * CoulombFriction::respond(), or respond_in_contact() with the
+       * point's reaction in exact contact. */
+      CoulombFriction::Response
+      respond(const PointValues &values, const double p_old) const
+      {
+        const auto            &p   = values.point;
+        const Tensor<1, dim>  &w   = values.jump;
+        const CoulombFriction &law = faults.friction(p.fault);
+        if (contact && contact->exact(values.index))
+          return law.respond_in_contact(w * p.shear,
+                                        contact->normal_traction(values.index),
+                                        contact->closed(values.index),
+                                        p_old,
+                                        p.depth);
+        return law.respond(w * p.shear, w * p.normal, p_old, p.depth);
+      }
+
+      /** Exact contact: the normal tractions at @p owned, from the residual
+       * K u − f with the interface's other forces (the shear, and the open
+       * points' normal traction) at the last tractions; u_ghost gets
+       * @p owned, residual K u − f. */
+      void
+      contact_tractions(const TrilinosWrappers::MPI::Vector &owned);
+
       /** The return mapping, recorded as the law the next solve
        * linearises (the Newton tangent). */
       void
@@ -194,11 +222,52 @@ namespace lithostress
       void
       linear_solve(TrilinosWrappers::MPI::Vector &x);
 
+      /** Exact contact: the normal tractions the next linearisation takes
+       * (NormalContact::accelerate()), afresh if @p set_changed or a
+       * point's state changed since the last call. */
+      void
+      accelerate_tractions(const bool set_changed)
+      {
+        if (!contact)
+          return;
+        bool changed = set_changed || last_states.size() != responses.size();
+        for (unsigned int i = 0; !changed && i < responses.size(); ++i)
+          changed = responses[i].state != last_states[i];
+        last_states.resize(responses.size());
+        for (unsigned int i = 0; i < responses.size(); ++i)
+          last_states[i] = responses[i].state;
+        contact->accelerate(Utilities::MPI::logical_or(changed, communicator));
+      }
+
+      /** Exact contact: solve the linearised system, symmetric there, by
+       * CG with the AMG to the residual @p target, with the active
+       * constraints distributed. */
+      void
+      solve_symmetric(TrilinosWrappers::MPI::Vector &x, const double target);
+
       /** "<n> sliding, <m> open of <N> points" over all ranks. */
       std::string
       count_states() const;
 
+      /** The constraints of the linearised system: the problem's, with the
+       * ties of the closed nodes in exact contact. */
+      const AffineConstraints<double> &
+      active_constraints() const
+      {
+        return contact ? linearised.constraints : constraints;
+      }
+
+      /** Exact contact: the active-set update at the iterate of the last
+       * residual_norm() (NormalContact::update()); whether it changed.
+       * Without exact contact: false. */
+      bool
+      update_active_set()
+      {
+        return contact && contact->update(responses, normal_jumps);
+      }
+
       const Settings                         &settings;
+      const DiscreteProblem<dim>             &problem;
       const FaultInterface<dim>              &faults;
       FaultSlipHistory                       &history;
       SolverReport                           &report;
@@ -214,14 +283,44 @@ namespace lithostress
       std::vector<Tensor<2, dim>>            tangents;
       std::vector<Tensor<1, dim>>            affine;
       std::vector<CoulombFriction::Response> responses;
-      TrilinosWrappers::MPI::Vector          u, u_ghost, rhs, residual, force;
+      /** w_n at each point at the last evaluated iterate. */
+      std::vector<double> normal_jumps;
+      /** The states at the last accelerate_tractions(). */
+      std::vector<SlipState> last_states;
+      /** Exact normal contact, if a fault has it. */
+      std::unique_ptr<NormalContact<dim>> contact;
+      /** The linearised system: its matrix, right-hand side and (exact
+       * contact) constraints. */
+      LinearSystem<dim>              linearised;
+      TrilinosWrappers::MPI::Vector &rhs = linearised.rhs;
+      TrilinosWrappers::MPI::Vector  u, u_ghost, residual, force;
       /** ‖f‖; the last residual norm; the last excess shear [Pa]. */
       double f = 0, r_norm = 0, excess = 0;
       /** The last iteration. */
       unsigned int iteration = 0;
 
     private:
-      TrilinosWrappers::SparseMatrix      matrix;
+      /** The interface's forces ∫[v]·t at u_ghost into force (with the
+       * problem's constraints); with @p contact_normal the closed points'
+       * normal tractions too. */
+      void
+      add_interface_forces(const bool contact_normal);
+
+      /** The residual norm in exact contact (residual_norm()): the normal
+       * tractions from the residual without them, then the residual with
+       * them. */
+      double
+      contact_residual_norm();
+
+      /** Exact contact: the bulk system with the active constraints
+       * (ElasticAssembler; the constraints change with the open nodes). */
+      void
+      assemble_bulk_in_contact();
+
+      TrilinosWrappers::SparseMatrix &matrix = linearised.matrix;
+      /** Exact contact: the bulk right-hand side with the active
+       * constraints (the thesis method's solves add only the slip). */
+      TrilinosWrappers::MPI::Vector       bulk_rhs;
       std::unique_ptr<Epetra_MultiVector> modes;
       TrilinosWrappers::PreconditionAMG   amg;
       typename AMGSolver<dim>::Settings   ilu_settings, chebyshev_settings;
@@ -236,6 +335,7 @@ namespace lithostress
       SolverReport                           &report,
       const std::function<void(std::string)> &progress)
         : settings(settings)
+        , problem(problem)
         , faults(faults)
         , history(history)
         , report(report)
@@ -249,7 +349,6 @@ namespace lithostress
         , u_ghost(problem.system.locally_owned,
                   problem.system.locally_relevant,
                   communicator)
-        , rhs(problem.system.rhs)
         , residual(problem.system.rhs)
         , force(problem.system.rhs)
     {
@@ -268,6 +367,19 @@ namespace lithostress
       tangents.resize(n_points);
       affine.resize(n_points);
       responses.resize(n_points);
+      normal_jumps.resize(n_points);
+      rhs                      = problem.system.rhs;
+      linearised.locally_owned = system.locally_owned;
+      if (faults.contact())
+        {
+          contact =
+            std::make_unique<NormalContact<dim>>(faults,
+                                                 dof_handler,
+                                                 fe_space,
+                                                 system.locally_owned,
+                                                 system.locally_relevant);
+          contact->reinit_matrix(constraints, matrix);
+        }
       u = 0;
       constraints.distribute(u);
       u_ghost = u;
@@ -311,10 +423,8 @@ namespace lithostress
       const auto           &p = values.point;
       const Tensor<1, dim> &w = values.jump;
       const unsigned int    i = values.index;
-      responses[i]            = faults.friction(p.fault).respond(w * p.shear,
-                                                      w * p.normal,
-                                                      history.slip[i],
-                                                      p.depth);
+      normal_jumps[i]         = w * p.normal;
+      responses[i]            = respond(values, history.slip[i]);
       t                       = responses[i].shear_traction * p.shear +
           responses[i].normal_traction * p.normal;
       D = from_local_frame<dim>(responses[i].tangent, p.shear, p.normal);
@@ -327,18 +437,19 @@ namespace lithostress
                                     Tensor<2, dim>    &D)
     {
       return_mapping(values, t, D);
-      tangents[values.index] = D;
-      affine[values.index]   = t - D * values.jump;
+      // A closed point's normal traction is its constraint's reaction,
+      // not a load.
+      const unsigned int i = values.index;
+      if (contact && contact->exact(i) && contact->closed(i))
+        t -= (t * values.point.normal) * values.point.normal;
+      tangents[i] = D;
+      affine[i]   = t - D * values.jump;
     }
 
     template <int dim>
-    double
-    SlidingContext<dim>::residual_norm(
-      const TrilinosWrappers::MPI::Vector &owned)
+    void
+    SlidingContext<dim>::add_interface_forces(const bool contact_normal)
     {
-      u_ghost = owned;
-      system.matrix.vmult(residual, owned);
-      residual -= system.rhs;
       force                                      = 0;
       double                                  ex = 0;
       typename FaultInterface<dim>::FaceTerms terms(fe_space);
@@ -351,6 +462,9 @@ namespace lithostress
           ex = std::max(ex,
                         std::abs((t - tangents[i] * values.jump - affine[i]) *
                                  values.point.shear));
+          if (!contact_normal && contact && contact->exact(i) &&
+              contact->closed(i))
+            t -= (t * values.point.normal) * values.point.normal;
           terms.add_traction(values, t);
           if (!values.last_of_pair)
             return;
@@ -360,9 +474,42 @@ namespace lithostress
           terms.clear();
         });
       force.compress(VectorOperation::add);
+      excess = Utilities::MPI::max(ex, communicator);
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::contact_tractions(
+      const TrilinosWrappers::MPI::Vector &owned)
+    {
+      u_ghost = owned;
+      system.matrix.vmult(residual, owned);
+      residual -= system.rhs;
+      add_interface_forces(false);
+      force += residual;
+      TrilinosWrappers::MPI::Vector ghosted(system.locally_owned,
+                                            system.locally_relevant,
+                                            communicator);
+      ghosted = force;
+      contact->compute_tractions(ghosted);
+    }
+
+    template <int dim>
+    double
+    SlidingContext<dim>::residual_norm(
+      const TrilinosWrappers::MPI::Vector &owned)
+    {
+      if (contact)
+        contact_tractions(owned);
+      else
+        {
+          u_ghost = owned;
+          system.matrix.vmult(residual, owned);
+          residual -= system.rhs;
+        }
+      add_interface_forces(true);
       residual += force;
       constraints.set_zero(residual);
-      excess = Utilities::MPI::max(ex, communicator);
       return residual.l2_norm();
     }
 
@@ -370,8 +517,13 @@ namespace lithostress
     void
     SlidingContext<dim>::set_up(const Law &law)
     {
-      matrix.copy_from(system.matrix);
-      rhs = system.rhs;
+      if (contact)
+        assemble_bulk_in_contact();
+      else
+        {
+          matrix.copy_from(system.matrix);
+          rhs = system.rhs;
+        }
       typename FaultInterface<dim>::FaceTerms terms(fe_space);
       faults.for_each_interface_point(
         dof_handler, fe_space, &u_ghost, [&](const PointValues &values) {
@@ -382,7 +534,7 @@ namespace lithostress
           terms.add_affine(values, t - D * values.jump);
           if (!values.last_of_pair)
             return;
-          constraints.distribute_local_to_global(
+          active_constraints().distribute_local_to_global(
             terms.matrix, terms.rhs, values.dofs, matrix, rhs);
           terms.clear();
         });
@@ -394,14 +546,31 @@ namespace lithostress
         modes = make_rigid_body_modes(dof_handler,
                                       fe_space,
                                       matrix.trilinos_matrix().DomainMap());
-      initialize_elasticity_amg<dim>(amg, matrix, *modes, ilu_settings, true);
+      // Exact contact leaves a symmetric tangent without stiff springs:
+      // the elasticity AMG with its Chebyshev smoother, as for a locked
+      // fault.
+      initialize_elasticity_amg<dim>(
+        amg, matrix, *modes, contact ? chebyshev_settings : ilu_settings, true);
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::assemble_bulk_in_contact()
+    {
+      contact->make_constraints(constraints, linearised.constraints);
+      ElasticAssembler<dim> assembler(fe_space,
+                                      problem.stress_model,
+                                      problem.loads);
+      assembler.set_history_strain(problem.history_strain);
+      assembler.assemble(dof_handler, linearised, true);
+      bulk_rhs = rhs;
     }
 
     template <int dim>
     void
     SlidingContext<dim>::assemble_rhs(const Law &law)
     {
-      rhs = system.rhs;
+      rhs = contact ? bulk_rhs : system.rhs;
       typename FaultInterface<dim>::FaceTerms terms(fe_space);
       faults.for_each_interface_point(
         dof_handler, fe_space, nullptr, [&](const PointValues &values) {
@@ -413,10 +582,10 @@ namespace lithostress
           if (!values.last_of_pair)
             return;
           // The tangent only for the constraints' inhomogeneities.
-          constraints.distribute_local_to_global(terms.rhs,
-                                                 values.dofs,
-                                                 rhs,
-                                                 terms.matrix);
+          active_constraints().distribute_local_to_global(terms.rhs,
+                                                          values.dofs,
+                                                          rhs,
+                                                          terms.matrix);
           terms.clear();
         });
       rhs.compress(VectorOperation::add);
@@ -432,14 +601,19 @@ namespace lithostress
           TrilinosWrappers::SolverDirect direct(control);
           direct.initialize(matrix);
           direct.solve(x, rhs);
-          constraints.distribute(x);
+          active_constraints().distribute(x);
           ++report.linear_solves;
+          return;
+        }
+      const double target = settings.linear_tolerance * rhs.l2_norm();
+      if (contact)
+        {
+          solve_symmetric(x, target);
           return;
         }
       // GMRES with right preconditioning measures the true residual, which
       // the tolerance refers to.
-      const double target = settings.linear_tolerance * rhs.l2_norm();
-      const auto   gmres  = [&](const unsigned int max_iterations) {
+      const auto gmres = [&](const unsigned int max_iterations) {
         SolverControl control(max_iterations, target, false, false);
         try
           {
@@ -461,7 +635,7 @@ namespace lithostress
                                    "GMRES with AMG",
                                    rhs.l2_norm(),
                                    "raise Faults/Sliding solver/Linear "
-                                      "solver tolerance");
+                                   "solver tolerance");
           }
         report.iterations += iterations_of(control);
         return true;
@@ -475,6 +649,33 @@ namespace lithostress
           gmres(5000);
         }
       constraints.distribute(x);
+      ++report.linear_solves;
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::solve_symmetric(TrilinosWrappers::MPI::Vector &x,
+                                         const double                   target)
+    {
+      SolverControl control(5000, target, false, false);
+      try
+        {
+          SolverCG<TrilinosWrappers::MPI::Vector> solver(control);
+          stop_on_signal(solver, communicator);
+          solver.solve(matrix, x, rhs, amg);
+        }
+      catch (const SolverControl::NoConvergence &exc)
+        {
+          report.iterations += exc.last_step;
+          rethrow_solver_failure(exc,
+                                 communicator,
+                                 "CG with AMG",
+                                 rhs.l2_norm(),
+                                 "raise Faults/Sliding solver/Linear "
+                                 "solver tolerance");
+        }
+      report.iterations += iterations_of(control);
+      active_constraints().distribute(x);
       ++report.linear_solves;
     }
 
@@ -508,6 +709,10 @@ namespace lithostress
       const auto                   &settings = c.settings;
       TrilinosWrappers::MPI::Vector x(c.u), step(c.u), trial(c.u);
       c.r_norm = c.residual_norm(c.u);
+      // Whether the last iteration changed exact contact's open nodes: the
+      // next step satisfies other constraints than the iterate, and is
+      // taken whole.
+      bool set_changed = false;
       for (c.iteration = 1; c.iteration <= settings.max_iterations;
            ++c.iteration)
         {
@@ -527,13 +732,14 @@ namespace lithostress
               trial = c.u;
               trial.add(alpha, step);
               trial_norm = c.residual_norm(trial);
-              if (!settings.line_search || c.iteration == 1 ||
+              if (!settings.line_search || c.iteration == 1 || set_changed ||
                   trial_norm <= (1 - 1e-4 * alpha) * c.r_norm || halving == 6)
                 break;
               alpha /= 2;
             }
-          c.u      = trial;
-          c.r_norm = trial_norm;
+          c.u         = trial;
+          c.r_norm    = trial_norm;
+          set_changed = c.update_active_set();
           if (!std::isfinite(c.r_norm))
             throw ComputationError(
               "the Newton iteration for the sliding on " +
@@ -547,8 +753,9 @@ namespace lithostress
                << (alpha < 1 ? ", step " + std::to_string(alpha) : "");
           c.progress(line.str());
           if (c.r_norm <= settings.residual_tolerance * c.f &&
-              c.excess <= settings.excess_shear_tolerance)
+              c.excess <= settings.excess_shear_tolerance && !set_changed)
             return true;
+          c.accelerate_tractions(set_changed);
         }
       return false;
     }
@@ -566,8 +773,11 @@ namespace lithostress
                         std::vector<bool>   &slid)
     {
       using PointValues = typename SlidingContext<dim>::PointValues;
-      c.u_ghost         = c.u;
-      double ex         = 0;
+      if (c.contact)
+        c.contact_tractions(c.u);
+      else
+        c.u_ghost = c.u;
+      double ex = 0;
       c.faults.for_each_interface_point(
         c.dof_handler, c.fe_space, &c.u_ghost, [&](const PointValues &values) {
           const auto           &p = values.point;
@@ -576,7 +786,7 @@ namespace lithostress
           // The excess over the limit at the elastic traction.
           const CoulombFriction     &law = c.faults.friction(p.fault);
           CoulombFriction::Response &r   = c.responses[i];
-          r = law.respond(w * p.shear, w * p.normal, slip[i], p.depth);
+          r                              = c.respond(values, slip[i]);
           const double tau = law.shear_stiffness * (w * p.shear - slip[i]);
           double       e   = 0;
           if (r.state == SlipState::open)
@@ -682,8 +892,9 @@ namespace lithostress
     // the caller (or, if not converged, shown).
     for (unsigned int i = 0; i < c.n_points; ++i)
       {
-        history.trial_slip[i]   = c.responses[i].plastic_slip;
-        history.trial_states[i] = c.responses[i].state;
+        history.trial_slip[i]      = c.responses[i].plastic_slip;
+        history.trial_states[i]    = c.responses[i].state;
+        history.normal_traction[i] = c.responses[i].normal_traction;
       }
     report.nonlinear_iterations =
       std::min(c.iteration, parameters.max_iterations);

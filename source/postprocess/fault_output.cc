@@ -46,7 +46,10 @@ namespace lithostress
         const double t_s    = law.shear_stiffness * (w_s - slip_p);
         sample.shear_traction =
           t_s * (p.shear[0] * down[0] + p.shear[1] * down[1]);
-        sample.normal_traction = law.normal_stiffness * w_n;
+        sample.normal_traction =
+          law.exact_contact && i < history.normal_traction.size()
+            ? history.normal_traction[i]
+            : law.normal_stiffness * w_n;
         if (frictional)
           {
             sample.normal_traction -= law.overburden(p.depth);

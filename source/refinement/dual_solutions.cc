@@ -1,13 +1,163 @@
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <lithostress/assembly/elastic_assembler.h>
+#include <lithostress/faults/normal_contact.h>
 #include <lithostress/refinement/dual_solutions.h>
+#include <lithostress/solvers/amg_solver.h>
+#include <lithostress/solvers/rigid_body_modes.h>
 
 #include <memory>
 
 namespace lithostress
 {
+  namespace
+  {
+    /**
+     * The dual problems' operator where the faults need the sliding
+     * solver: the bulk with the stuck (elastic) face terms of every fault
+     * and, in exact contact, every node closed (NormalContact's ties). In
+     * exact contact it is symmetric and without stiff springs: CG with the
+     * elasticity AMG; with the thesis's normal spring a sparse direct
+     * factorisation, once for all goals.
+     */
+    template <int dim>
+    class StuckInterfaceOperator
+    {
+    public:
+      StuckInterfaceOperator(const DiscreteProblem<dim> &problem,
+                             const FaultInterface<dim>  &faults)
+          : faults(faults)
+          , problem(problem)
+      {
+        if (!active())
+          return;
+        const LinearSystem<dim> &system = problem.system;
+        stuck.locally_owned             = system.locally_owned;
+        stuck.rhs.reinit(system.locally_owned,
+                         problem.dof_handler.get_communicator());
+        if (faults.contact())
+          {
+            NormalContact<dim> contact(faults,
+                                       problem.dof_handler,
+                                       problem.fe_space,
+                                       system.locally_owned,
+                                       system.locally_relevant);
+            contact.make_constraints(system.constraints, stuck.constraints);
+            contact.reinit_matrix(system.constraints, stuck.matrix);
+            ElasticAssembler<dim> assembler(problem.fe_space,
+                                            problem.stress_model,
+                                            problem.loads);
+            assembler.assemble(problem.dof_handler, stuck, true);
+          }
+        else
+          {
+            stuck.constraints.copy_from(system.constraints);
+            stuck.matrix.copy_from(system.matrix);
+          }
+        add_stuck_face_terms();
+        if (faults.contact())
+          {
+            modes =
+              make_rigid_body_modes(problem.dof_handler,
+                                    problem.fe_space,
+                                    stuck.matrix.trilinos_matrix().DomainMap());
+            initialize_elasticity_amg<dim>(amg,
+                                           stuck.matrix,
+                                           *modes,
+                                           typename AMGSolver<dim>::Settings(),
+                                           true);
+          }
+        else
+          {
+            control = std::make_unique<SolverControl>(1, 0);
+            direct = std::make_unique<TrilinosWrappers::SolverDirect>(*control);
+            direct->initialize(stuck.matrix);
+          }
+      }
+
+      /** Whether the faults need it (FaultInterface::needs_sliding_solver()).
+       */
+      bool
+      active() const
+      {
+        return faults.needs_sliding_solver();
+      }
+
+      /** The solver's name for the report. */
+      std::string
+      name() const
+      {
+        return faults.contact() ? "CG with AMG (dual, contact)"
+                                : "direct (dual)";
+      }
+
+      /** The constraints of the dual problems. */
+      const AffineConstraints<double> &
+      constraints() const
+      {
+        return stuck.constraints;
+      }
+
+      /** @p g := the constraints' inhomogeneous part. */
+      void
+      inhomogeneity(TrilinosWrappers::MPI::Vector &g) const
+      {
+        g = 0;
+        stuck.constraints.distribute(g);
+      }
+
+      /** Solve for @p z with the right-hand side @p rhs; the iterations. */
+      unsigned int
+      solve(TrilinosWrappers::MPI::Vector       &z,
+            const TrilinosWrappers::MPI::Vector &rhs) const
+      {
+        if (direct)
+          {
+            direct->solve(z, rhs);
+            return 0;
+          }
+        SolverControl control(5000, 1e-10 * rhs.l2_norm(), false, false);
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        cg.solve(stuck.matrix, z, rhs, amg);
+        return control.last_step();
+      }
+
+    private:
+      /** The stuck tangent of every fault with face terms. */
+      void
+      add_stuck_face_terms()
+      {
+        using PointValues = typename FaultInterface<dim>::PointValues;
+        typename FaultInterface<dim>::FaceTerms terms(problem.fe_space);
+        faults.for_each_interface_point(
+          problem.dof_handler,
+          problem.fe_space,
+          nullptr,
+          [&](const PointValues &values) {
+            terms.add_tangent(values, faults.stuck_tangent(values.point));
+            if (!values.last_of_pair)
+              return;
+            stuck.constraints.distribute_local_to_global(terms.matrix,
+                                                         values.dofs,
+                                                         stuck.matrix);
+            terms.clear();
+          });
+        stuck.matrix.compress(VectorOperation::add);
+      }
+
+      const FaultInterface<dim>                      &faults;
+      const DiscreteProblem<dim>                     &problem;
+      LinearSystem<dim>                               stuck;
+      std::unique_ptr<Epetra_MultiVector>             modes;
+      TrilinosWrappers::PreconditionAMG               amg;
+      std::unique_ptr<SolverControl>                  control;
+      std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+    };
+  } // namespace
+
   template <int dim>
   std::vector<TrilinosWrappers::MPI::Vector>
   solve_dual_problems(const StressGoals<dim>     &goals,
@@ -16,7 +166,6 @@ namespace lithostress
                       const FaultInterface<dim>  &faults,
                       SolverReport               &report)
   {
-    using PointValues               = typename FaultInterface<dim>::PointValues;
     LinearSystem<dim> &system       = problem.system;
     const MPI_Comm     communicator = problem.dof_handler.get_communicator();
     report                          = SolverReport();
@@ -30,34 +179,16 @@ namespace lithostress
     inhomogeneity = 0;
     system.constraints.distribute(inhomogeneity);
 
-    // A frictional fault: the bulk matrix with the stuck springs, factorised
-    // once.
-    TrilinosWrappers::SparseMatrix                  stuck;
-    std::unique_ptr<SolverControl>                  control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
-    if (faults.frictional())
+    // Faults that the sliding solver handles: their stuck operator, with
+    // exact contact's ties at every node.
+    StuckInterfaceOperator<dim> stuck(problem, faults);
+    if (stuck.active())
       {
-        stuck.copy_from(system.matrix);
-        typename FaultInterface<dim>::FaceTerms terms(problem.fe_space);
-        faults.for_each_interface_point(
-          problem.dof_handler,
-          problem.fe_space,
-          nullptr,
-          [&](const PointValues &values) {
-            terms.add_tangent(values, faults.stuck_tangent(values.point));
-            if (!values.last_of_pair)
-              return;
-            system.constraints.distribute_local_to_global(terms.matrix,
-                                                          values.dofs,
-                                                          stuck);
-            terms.clear();
-          });
-        stuck.compress(VectorOperation::add);
-        control = std::make_unique<SolverControl>(1, 0);
-        direct  = std::make_unique<TrilinosWrappers::SolverDirect>(*control);
-        direct->initialize(stuck);
-        report.solver = "direct (dual)";
+        report.solver = stuck.name();
+        stuck.inhomogeneity(inhomogeneity);
       }
+    const AffineConstraints<double> &constraints =
+      stuck.active() ? stuck.constraints() : system.constraints;
 
     std::vector<TrilinosWrappers::MPI::Vector> duals;
     for (unsigned int k = 0; k < goals.list().size(); ++k)
@@ -68,12 +199,12 @@ namespace lithostress
                                 problem.dof_handler,
                                 problem.fe_space,
                                 problem.stress_model,
-                                system.constraints,
+                                constraints,
                                 system.rhs);
-        if (direct)
+        if (stuck.active())
           {
             z.reinit(system.locally_owned, communicator);
-            direct->solve(z, system.rhs);
+            report.iterations += stuck.solve(z, system.rhs);
           }
         else
           {
@@ -86,7 +217,7 @@ namespace lithostress
             report.solve_time += r.solve_time;
           }
         ++report.linear_solves;
-        system.constraints.distribute(z);
+        constraints.distribute(z);
         z -= inhomogeneity;
         duals.emplace_back(system.locally_owned,
                            system.locally_relevant,

@@ -134,6 +134,7 @@ namespace lithostress
       }
     ElasticAssembler<dim> assembler(model.fe_space, model.stress_model, loads);
     assembler.set_history_strain(history);
+    assembled_history = history;
     // The matrix only where the operator changed (the time loop assembles
     // many right-hand sides for one operator).
     const bool with_matrix =
@@ -160,7 +161,7 @@ namespace lithostress
     // the ghosted solution is made after it: the peak memory of the solve
     // holds neither.
     TrilinosWrappers::MPI::Vector owned_solution;
-    if (model.faults.frictional())
+    if (model.faults.needs_sliding_solver())
       solve_sliding(owned_solution, commit, on_failure);
     else
       stats.solver = solver->solve(discrete_problem(), owned_solution);
@@ -228,7 +229,8 @@ namespace lithostress
             model.loads,
             model.prescribed_displacement,
             keep_setup,
-            operator_version()};
+            operator_version(),
+            assembled_history};
   }
 
   template <int dim>

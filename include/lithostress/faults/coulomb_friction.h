@@ -54,6 +54,10 @@ namespace lithostress
     /** False for an elastic fault (Interface law = elastic): always stuck,
      * the traction K w whatever its size or sign. */
     bool slides = true;
+    /** Exact normal contact (`Normal stiffness = exact`): no normal spring;
+     * where the fault is closed its normal jump is zero, by constraints,
+     * and t_n is their reaction (respond_in_contact()). */
+    bool exact_contact = false;
     /** ρ_l and ρ_w [kg m⁻³] (0 = no such term) and g [m s⁻²]. */
     double lithostatic_density = 2911, pore_fluid_density = 1000,
            gravity = 9.81;
@@ -87,6 +91,22 @@ namespace lithostress
             const double w_n,
             const double p_old,
             const double depth) const;
+
+    /**
+     * The return mapping in exact normal contact: at a @p closed point the
+     * normal jump is held at zero and @p t_n is the normal traction that
+     * holds it (the constraint's reaction); an open point carries no total
+     * normal traction (its model traction t_n = (ρ_l − ρ_w) g d cancels the
+     * overburden, so σ_n,eff = 0) and no shear. The tangent is the shear
+     * part only: k_s while stuck, 0 while sliding or open (the friction
+     * limit is taken at the given t_n).
+     */
+    Response
+    respond_in_contact(const double w_s,
+                       const double t_n,
+                       const bool   closed,
+                       const double p_old,
+                       const double depth) const;
   };
 } // namespace lithostress
 

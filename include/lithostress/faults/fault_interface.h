@@ -124,10 +124,22 @@ namespace lithostress
        * over the pair's points is complete and can be added to global
        * objects. */
       bool last_of_pair;
+      /** The DoFs (x, y) of the node at this point on the side that exact
+       * contact constrains: field 1 where it has a node here, else field
+       * 0 (the finer side of a hanging face). node[0] is the node's key
+       * (ContactState). */
+      const std::array<types::global_dof_index, dim> &node;
+      /** [φ]·e_d of that node's DoF of component d: +1 if its side is the
+       * hanging wall, −1 if the footwall. */
+      double node_sign;
     };
 
     /** A visitor of the interface points (for_each_interface_point()). */
     using PointVisitor = std::function<void(const PointValues &values)>;
+
+    /** Exact normal contact: whether the node with the key @p node
+     * (PointValues::node[0]) is open (its normal jump free). */
+    using ContactState = std::function<bool(types::global_dof_index node)>;
 
     /**
      * The face terms of an interface law on one face pair, summed over its
@@ -223,6 +235,42 @@ namespace lithostress
                     AffineConstraints<double>     &constraints,
                     const double                   time = 0) const;
 
+    /**
+     * Exact normal contact of the elastic and frictional faults with
+     * `Normal stiffness = exact`: add to @p constraints, at every node of
+     * their faces that @p is_open does not call open, n·w = 0 (the normal
+     * jump is zero), as one constraint on the node's component along which
+     * n is largest, of the side PointValues::node names; the nodes' other
+     * DoFs and a component constrained already (a boundary condition) are
+     * left alone.
+     */
+    void
+    add_contact_constraints(const DoFHandler<dim>         &dof_handler,
+                            const FiniteElementSpace<dim> &fe_space,
+                            AffineConstraints<double>     &constraints,
+                            const ContactState            &is_open) const;
+
+    /** Whether an elastic or frictional fault has exact normal contact
+     * (its normal traction is a constraint's reaction). */
+    bool
+    contact() const;
+
+    /** Whether the faults need FrictionalSlidingSolver: a frictional law
+     * (nonlinear) or exact normal contact (constraints with an active set,
+     * reactions as normal tractions). */
+    bool
+    needs_sliding_solver() const
+    {
+      return frictional() || contact();
+    }
+
+    /** Whether fault @p k has exact normal contact (no normal spring). */
+    bool
+    exact_contact(const unsigned int k) const
+    {
+      return faults[k].friction.exact_contact;
+    }
+
     /** Whether a fault adds face terms to the matrix (an elastic or
      * frictional law). */
     bool
@@ -248,13 +296,15 @@ namespace lithostress
     }
 
     /** The stiffness of the law at @p point while it sticks (the elastic
-     * law): D = k_s s⊗s + k_n n⊗n, in the (x, y) frame. */
+     * law): D = k_s s⊗s + k_n n⊗n, in the (x, y) frame; k_s s⊗s alone in
+     * exact contact, where constraints hold the normal jump. */
     Tensor<2, dim>
     stuck_tangent(const InterfacePoint &point) const
     {
       const CoulombFriction &law = friction(point.fault);
       return law.shear_stiffness * outer_product(point.shear, point.shear) +
-             law.normal_stiffness * outer_product(point.normal, point.normal);
+             (law.exact_contact ? 0. : law.normal_stiffness) *
+               outer_product(point.normal, point.normal);
     }
 
     /** The trace of fault @p k. */
@@ -264,8 +314,8 @@ namespace lithostress
       return faults[k].trace;
     }
 
-    /** "fault <a>" or "faults <a>, <b>": the frictional faults, for
-     * messages. */
+    /** "fault <a>" or "faults <a>, <b>": the faults the sliding solver
+     * solves (frictional, or elastic in exact contact), for messages. */
     std::string
     frictional_names() const;
 
@@ -355,6 +405,18 @@ namespace lithostress
     interface_point(const unsigned int fault,
                     const Point<dim>  &position,
                     const double       JxW) const;
+
+    /** The constraints of the faults that @p which selects: every
+     * component of the jump tied (to the prescribed jump at @p time), or
+     * with @p contact only the normal one at the nodes it does not call
+     * open. */
+    void
+    tie_faces(const DoFHandler<dim>                    &dof_handler,
+              const FiniteElementSpace<dim>            &fe_space,
+              AffineConstraints<double>                &constraints,
+              const double                              time,
+              const std::function<bool(const Fault &)> &which,
+              const ContactState                       *contact) const;
 
     /** The coarse cell (level 0) that @p cell descends from. */
     template <class Iterator>

@@ -72,6 +72,10 @@ namespace lithostress
     /** The last solve's values (committed by commit()). */
     std::vector<double>    trial_slip;
     std::vector<SlipState> trial_states;
+    /** The last solve's normal traction t_n at each point [Pa] (tension
+     * positive): the contact constraints' reaction in exact contact, k_n
+     * w_n with the normal spring. Not history: computed by every solve. */
+    std::vector<double> normal_traction;
 
   private:
     std::vector<unsigned int> faults;

@@ -56,7 +56,7 @@ namespace lithostress
 
     ElasticProblem(const Model                       &model,
                    std::unique_ptr<LinearSolver<dim>> linear_solver,
-                   FrictionalSlidingSolver<dim>       &sliding_solver,
+                   FrictionalSlidingSolver<dim>      &sliding_solver,
                    RunLog                            &log,
                    TimerOutput                       &timer);
 
@@ -86,8 +86,7 @@ namespace lithostress
      * error is passed on.
      */
     void
-    solve(const bool                   commit_slip,
-          const std::function<void()> &on_failure = {});
+    solve(const bool commit_slip, const std::function<void()> &on_failure = {});
 
     /** Commit the slip of the last solve to the faults' history. */
     void
@@ -199,24 +198,26 @@ namespace lithostress
       return (mesh_version << 32) + model.stress_model.moduli_version();
     }
 
-    Model                                model;
-    std::unique_ptr<LinearSolver<dim>>   solver;
-    FrictionalSlidingSolver<dim>        &sliding_solver;
-    RunLog                              &log;
-    TimerOutput                         &timer;
-    DoFHandler<dim>                      dofs;
-    LinearSystem<dim>                    system;
-    TrilinosWrappers::MPI::Vector        present_solution;
+    Model                              model;
+    std::unique_ptr<LinearSolver<dim>> solver;
+    FrictionalSlidingSolver<dim>      &sliding_solver;
+    RunLog                            &log;
+    TimerOutput                       &timer;
+    DoFHandler<dim>                    dofs;
+    LinearSystem<dim>                  system;
+    TrilinosWrappers::MPI::Vector      present_solution;
     /** The frictional faults' accumulated slip (their history). */
-    FaultSlipHistory                     slip_history;
-    CycleStatistics                      stats;
-    bool                                 keep_setup = false;
+    FaultSlipHistory slip_history;
+    CycleStatistics  stats;
+    bool             keep_setup = false;
     /** Counts the meshes set up. */
     unsigned long long mesh_version = 0;
     /** The mesh the loads' mesh integrals were computed on. */
     unsigned long long loads_prepared_for = ~0ULL;
     /** The operator version the assembled matrix belongs to. */
     unsigned long long matrix_version = ~0ULL;
+    /** The history strain of the last assembly (nullptr: none). */
+    const CreepStrain<dim> *assembled_history = nullptr;
   };
 } // namespace lithostress
 

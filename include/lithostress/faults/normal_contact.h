@@ -1,0 +1,159 @@
+#ifndef lithostress_faults_normal_contact_h
+#define lithostress_faults_normal_contact_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/faults/coulomb_friction.h>
+#include <lithostress/faults/fault_interface.h>
+
+#include <array>
+#include <deque>
+#include <set>
+#include <vector>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * Exact normal contact on the faults with `Normal stiffness = exact`,
+   * instead of the thesis's stiff normal spring (thesis §5.4, k = 1e15
+   * N/m per element, thousands of times the stiffness of the rock next to
+   * it; doc/faults.md, "Exact normal contact").
+   *
+   * At a closed node the normal jump is zero, by one constraint per node
+   * (FaultInterface::add_contact_constraints()), and the normal traction is
+   * that constraint's reaction: the normal part of the residual of the
+   * equations without it at the constrained node, divided by the node's
+   * share of the fault's area (the Gauss-Lobatto weights of its faces, so
+   * that the reaction is the traction the face terms integrate). An open
+   * node has a free normal jump and carries no total normal traction.
+   * Which nodes are open is an active set, updated between the sliding
+   * solver's Newton iterations as in deal.II's step-42: a closed node of a
+   * frictional fault opens where its effective normal stress is tensile,
+   * an open one closes where its two sides interpenetrate. An elastic
+   * fault's nodes stay closed. The open set is the same on every rank.
+   *
+   * The per-point data follow FaultInterface::for_each_interface_point()'s
+   * numbering (FaultSlipHistory's points).
+   */
+  template <int dim>
+  class NormalContact
+  {
+  public:
+    /** The contact of @p faults on this mesh: every node closed. */
+    NormalContact(const FaultInterface<dim>     &faults,
+                  const DoFHandler<dim>         &dof_handler,
+                  const FiniteElementSpace<dim> &fe_space,
+                  const IndexSet                &locally_owned,
+                  const IndexSet                &locally_relevant);
+
+    /** Whether interface point @p i lies on a fault with exact contact. */
+    bool
+    exact(const unsigned int i) const
+    {
+      return in_contact[i];
+    }
+
+    /** Whether point @p i is closed (its normal jump held at zero). */
+    bool
+    closed(const unsigned int i) const
+    {
+      return open.count(keys[i]) == 0;
+    }
+
+    /** The normal traction t_n at point @p i [Pa] (tension positive): the
+     * reaction of its node's constraint at the last compute_tractions(). */
+    double
+    normal_traction(const unsigned int i) const
+    {
+      return tractions[i];
+    }
+
+    /** Close every node: the elastic predictor of a solve. */
+    void
+    close_all()
+    {
+      open.clear();
+    }
+
+    /** The number of open nodes (the same on every rank). */
+    unsigned int
+    n_open() const
+    {
+      return open.size();
+    }
+
+    /** @p constraints := the problem's @p base constraints with the ties
+     * of the closed nodes, closed. */
+    void
+    make_constraints(const AffineConstraints<double> &base,
+                     AffineConstraints<double>       &constraints) const;
+
+    /** Give @p matrix a sparsity that holds the cells' terms and the
+     * faults' face terms condensed with @p base and the ties of any set of
+     * closed nodes (all closed, and every node open). */
+    void
+    reinit_matrix(const AffineConstraints<double> &base,
+                  TrilinosWrappers::SparseMatrix  &matrix) const;
+
+    /** The normal tractions of the closed points from @p residual (ghosted:
+     * K u − f plus the faults' forces other than the contact's, condensed
+     * with the problem's constraints only). */
+    void
+    compute_tractions(const TrilinosWrappers::MPI::Vector &residual);
+
+    /** The active-set update from the return mapping's @p responses at the
+     * points and their normal jumps @p normal_jumps: frictional points
+     * with σ_n,eff > 0 open, open points with w_n < 0 close. Returns
+     * whether the set changed (the same on every rank). */
+    bool
+    update(const std::vector<CoulombFriction::Response> &responses,
+           const std::vector<double>                    &normal_jumps);
+
+    /**
+     * The normal tractions for the next linearisation: the friction limit
+     * of a sliding point depends on its reaction, which the linearised
+     * system takes as given, so the Newton iteration is a fixed point
+     * λ ↦ (the reaction of the solution with λ), affine while the states
+     * do not change, converging linearly (about 0.2 per iteration on the
+     * thesis's thrust fault). Anderson acceleration (depth 4; Walker & Ni
+     * 2011) of that fixed point: from the reactions of the last iterates
+     * and the tractions their linearisations used, the combination whose
+     * residual is least. @p restart forgets the history (the states or
+     * the active set changed, so the map did).
+     */
+    void
+    accelerate(const bool restart);
+
+  private:
+    const FaultInterface<dim>     &faults;
+    const DoFHandler<dim>         &dof_handler;
+    const FiniteElementSpace<dim> &fe_space;
+    const IndexSet                 locally_owned, locally_relevant;
+    const MPI_Comm                 communicator;
+    /** Per point: on a fault with exact contact and sliding; the node's
+     * key and DoFs, the sign of their jumps, the fault's normal. */
+    std::vector<bool>                                     in_contact, slides;
+    std::vector<types::global_dof_index>                  keys;
+    std::vector<std::array<types::global_dof_index, dim>> nodes;
+    std::vector<double>                                   signs;
+    std::vector<Tensor<1, dim>>                           normals;
+    /** Σ JxW of the points at each node (indexed by the node's key). */
+    TrilinosWrappers::MPI::Vector weight;
+    std::vector<double>           tractions;
+    /** The keys of the open nodes. */
+    std::set<types::global_dof_index> open;
+    /** accelerate()'s state: the tractions the last linearisation used
+     * (empty: none yet), the last reactions and residuals, and the
+     * differences of the last iterates' reactions and residuals. */
+    std::vector<double>             input, last_g, last_f;
+    std::deque<std::vector<double>> dG, dF;
+  };
+} // namespace lithostress
+
+#endif

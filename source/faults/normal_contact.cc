@@ -1,0 +1,224 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <lithostress/faults/normal_contact.h>
+
+namespace lithostress
+{
+  template <int dim>
+  NormalContact<dim>::NormalContact(const FaultInterface<dim>     &faults,
+                                    const DoFHandler<dim>         &dof_handler,
+                                    const FiniteElementSpace<dim> &fe_space,
+                                    const IndexSet &locally_owned,
+                                    const IndexSet &locally_relevant)
+      : faults(faults)
+      , dof_handler(dof_handler)
+      , fe_space(fe_space)
+      , locally_owned(locally_owned)
+      , locally_relevant(locally_relevant)
+      , communicator(dof_handler.get_communicator())
+  {
+    // Each node's share of the fault's area, summed over its points on
+    // every rank (a node between two faces has a point on each).
+    TrilinosWrappers::MPI::Vector area;
+    area.reinit(locally_owned, locally_relevant, communicator, true);
+    using PointValues = typename FaultInterface<dim>::PointValues;
+    faults.for_each_interface_point(
+      dof_handler, fe_space, nullptr, [&](const PointValues &values) {
+        const unsigned int k = values.point.fault;
+        const bool exact = faults.exact_contact(k) && values.node_sign != 0 &&
+                           faults.has_face_terms(k);
+        in_contact.push_back(exact);
+        slides.push_back(faults.friction(k).slides);
+        keys.push_back(values.node[0]);
+        nodes.push_back(values.node);
+        signs.push_back(values.node_sign);
+        normals.push_back(values.point.normal);
+        if (exact)
+          area.add(std::vector<types::global_dof_index>{values.node[0]},
+                   std::vector<double>{values.point.JxW});
+      });
+    area.compress(VectorOperation::add);
+    weight.reinit(locally_owned, locally_relevant, communicator);
+    weight = area;
+    tractions.assign(keys.size(), 0.);
+  }
+
+  template <int dim>
+  void
+  NormalContact<dim>::make_constraints(
+    const AffineConstraints<double> &base,
+    AffineConstraints<double>       &constraints) const
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    constraints.merge(base);
+    faults.add_contact_constraints(dof_handler,
+                                   fe_space,
+                                   constraints,
+                                   [this](const types::global_dof_index node) {
+                                     return open.count(node) > 0;
+                                   });
+    constraints.close();
+  }
+
+  template <int dim>
+  void
+  NormalContact<dim>::reinit_matrix(
+    const AffineConstraints<double> &base,
+    TrilinosWrappers::SparseMatrix  &matrix) const
+  {
+    // Every node tied: the couplings the ties make. The constrained rows
+    // are kept as well: they are the open nodes' rows.
+    AffineConstraints<double> all_closed;
+    all_closed.reinit(locally_relevant);
+    all_closed.merge(base);
+    faults.add_contact_constraints(dof_handler,
+                                   fe_space,
+                                   all_closed,
+                                   [](const types::global_dof_index) {
+                                     return false;
+                                   });
+    all_closed.close();
+    TrilinosWrappers::SparsityPattern pattern(locally_owned,
+                                              locally_owned,
+                                              locally_relevant,
+                                              communicator);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    pattern,
+                                    all_closed,
+                                    true,
+                                    Utilities::MPI::this_mpi_process(
+                                      communicator));
+    for (const auto &clique : faults.interface_cliques(dof_handler))
+      all_closed.add_entries_local_to_global(clique, pattern, true);
+    pattern.compress();
+    matrix.reinit(pattern);
+  }
+
+  template <int dim>
+  void
+  NormalContact<dim>::compute_tractions(
+    const TrilinosWrappers::MPI::Vector &residual)
+  {
+    // At a closed node on the side `signs` names, K u − f + (the other
+    // forces) + s W t_n n = 0 in the normal direction, s = ±1 the sign of
+    // that side's jump, W the node's area.
+    for (unsigned int i = 0; i < keys.size(); ++i)
+      if (in_contact[i])
+        {
+          double r_n = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            r_n += residual[nodes[i][d]] * normals[i][d];
+          tractions[i] = -signs[i] * r_n / weight[keys[i]];
+        }
+  }
+
+  template <int dim>
+  bool
+  NormalContact<dim>::update(
+    const std::vector<CoulombFriction::Response> &responses,
+    const std::vector<double>                    &normal_jumps)
+  {
+    std::vector<types::global_dof_index> opening, closing;
+    for (unsigned int i = 0; i < keys.size(); ++i)
+      {
+        if (!in_contact[i])
+          continue;
+        if (closed(i) && slides[i] && responses[i].effective_normal_stress > 0)
+          opening.push_back(keys[i]);
+        else if (!closed(i) && normal_jumps[i] < 0)
+          closing.push_back(keys[i]);
+      }
+    bool changed = false;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, opening))
+      for (const types::global_dof_index key : part)
+        changed = open.insert(key).second || changed;
+    for (const auto &part : Utilities::MPI::all_gather(communicator, closing))
+      for (const types::global_dof_index key : part)
+        changed = open.erase(key) > 0 || changed;
+    return changed;
+  }
+
+  template <int dim>
+  void
+  NormalContact<dim>::accelerate(const bool restart)
+  {
+    const unsigned int  depth = 4;
+    std::vector<double> g(tractions.size(), 0.);
+    for (unsigned int i = 0; i < tractions.size(); ++i)
+      if (in_contact[i] && closed(i))
+        g[i] = tractions[i];
+    if (input.empty() || restart)
+      {
+        dG.clear();
+        dF.clear();
+        last_f.clear();
+        last_g = g;
+        input  = g;
+        return;
+      }
+    std::vector<double> f(g.size());
+    for (unsigned int i = 0; i < g.size(); ++i)
+      f[i] = g[i] - input[i];
+    if (!last_f.empty())
+      {
+        std::vector<double> df(g.size()), dg(g.size());
+        for (unsigned int i = 0; i < g.size(); ++i)
+          {
+            df[i] = f[i] - last_f[i];
+            dg[i] = g[i] - last_g[i];
+          }
+        dF.push_back(df);
+        dG.push_back(dg);
+        if (dF.size() > depth)
+          {
+            dF.pop_front();
+            dG.pop_front();
+          }
+      }
+    last_f = f;
+    last_g = g;
+    // γ = argmin |f − ΔF γ|: the normal equations, summed over the ranks.
+    const unsigned int  m = dF.size();
+    std::vector<double> products(m * m + m, 0.);
+    for (unsigned int a = 0; a < m; ++a)
+      {
+        for (unsigned int b = 0; b < m; ++b)
+          for (unsigned int i = 0; i < g.size(); ++i)
+            products[a * m + b] += dF[a][i] * dF[b][i];
+        for (unsigned int i = 0; i < g.size(); ++i)
+          products[m * m + a] += dF[a][i] * f[i];
+      }
+    Utilities::MPI::sum(products, communicator, products);
+    FullMatrix<double> normal(m, m);
+    Vector<double>     rhs(m), gamma(m);
+    double             scale = 0;
+    for (unsigned int a = 0; a < m; ++a)
+      {
+        for (unsigned int b = 0; b < m; ++b)
+          normal(a, b) = products[a * m + b];
+        rhs(a) = products[m * m + a];
+        scale  = std::max(scale, normal(a, a));
+      }
+    input = g;
+    if (m == 0 || !(scale > 0))
+      return;
+    // A little Tikhonov regularisation: nearly parallel differences.
+    for (unsigned int a = 0; a < m; ++a)
+      normal(a, a) += 1e-10 * scale;
+    normal.gauss_jordan();
+    normal.vmult(gamma, rhs);
+    for (unsigned int a = 0; a < m; ++a)
+      for (unsigned int i = 0; i < g.size(); ++i)
+        input[i] -= gamma(a) * dG[a][i];
+    for (unsigned int i = 0; i < g.size(); ++i)
+      if (in_contact[i] && closed(i))
+        tractions[i] = input[i];
+  }
+
+  template class NormalContact<2>;
+} // namespace lithostress
