@@ -1,6 +1,8 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <algorithm>
+
 #include <lithostress/faults/fault_interface.h>
 
 // FaultInterface's interface quadrature and face terms: the one loop over
@@ -241,6 +243,11 @@ namespace lithostress
             for (unsigned int i = 0; i < n; ++i)
               w += values[i] * jump[i];
             const double node_sign = find_node<dim>(jump, dofs, n_minus, node);
+            const Point<dim> &node_position =
+              std::find(plus_dofs.begin(), plus_dofs.end(), node[0]) !=
+                  plus_dofs.end()
+                ? p->quadrature_point(qp)
+                : m->quadrature_point(q);
             visitor(PointValues{index++,
                                 point,
                                 w,
@@ -248,7 +255,8 @@ namespace lithostress
                                 jump,
                                 q + 1 == m->n_quadrature_points,
                                 node,
-                                node_sign});
+                                node_sign,
+                                node_position});
           }
       });
   }

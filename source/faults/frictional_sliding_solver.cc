@@ -462,9 +462,11 @@ namespace lithostress
           ex = std::max(ex,
                         std::abs((t - tangents[i] * values.jump - affine[i]) *
                                  values.point.shear));
-          if (!contact_normal && contact && contact->exact(i) &&
-              contact->closed(i))
-            t -= (t * values.point.normal) * values.point.normal;
+          // A closed point's normal traction acts along its tie's normal.
+          if (contact && contact->exact(i) && contact->closed(i))
+            t = (t * values.point.shear) * values.point.shear +
+                (contact_normal ? responses[i].normal_traction : 0.) *
+                  contact->normal(i);
           terms.add_traction(values, t);
           if (!values.last_of_pair)
             return;

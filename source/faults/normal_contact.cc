@@ -36,7 +36,9 @@ namespace lithostress
         keys.push_back(values.node[0]);
         nodes.push_back(values.node);
         signs.push_back(values.node_sign);
-        normals.push_back(values.point.normal);
+        // The normal at the node, as its tie takes it.
+        normals.push_back(
+          faults.trace(k).hanging_wall_normal(values.node_position));
         if (exact)
           area.add(std::vector<types::global_dof_index>{values.node[0]},
                    std::vector<double>{values.point.JxW});

@@ -128,6 +128,29 @@ for ranks in (1, 2):
           "both blocks stress-free, no traction on the fault, largest relative difference %.1e"
           % (ranks, fault[0]["opening"], worst))
 
+# The thesis iteration (its excess shear as forces, factor 1) in exact
+# contact: the same sliding state within its stopping tolerance of 1 kPa;
+# the slip within the bound that tolerance implies (tests/faults/check.py:
+# an excess e is a slip deficit of e (1/k_s + L/G), removed at the rate
+# 1 - r per solve, r = (L/G) / (1/k_s + L/G)).
+out = os.path.abspath("output_contact_thesis")
+run("faults/frictional_fault.prm", out, 1,
+    EXACT + ["Faults/Sliding solver/Method=thesis", "Faults/Sliding solver/Excess shear tolerance=1e3",
+             "Faults/Sliding solver/Maximum iterations=1000"])
+fault = read_fault(out)
+slip = D_RIGHT - TAU_F * L / G0
+compliance = 1 / 1e7 + L / G0
+r = (L / G0) / compliance
+bound = 1e3 * compliance / (1 - r)
+worst_tau = max(abs(-f["shear_traction"] - TAU_F) for f in fault)
+worst_slip = max(abs(-f["slip"] - slip) for f in fault)
+worst_normal = max(abs(f["normal_traction"] + P) for f in fault)
+check(all(f["state"] == "sliding" for f in fault) and worst_tau <= 1e3 and worst_slip <= bound,
+      "thesis iteration in exact contact: %d solves, all points sliding, shear traction within "
+      "%.0f Pa of mu|sigma_n| (tolerance 1 kPa; normal traction within %.0f Pa of -P), slip "
+      "within %.1e m (bound %.1e m)"
+      % (read_summary(out)["linear_solves"], worst_tau, worst_normal, worst_slip, bound))
+
 # The spring law tends to the exact one: the displacement difference at the
 # points, per decade of k_n.
 differences = []

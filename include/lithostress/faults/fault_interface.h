@@ -132,6 +132,9 @@ namespace lithostress
       /** [φ]·e_d of that node's DoF of component d: +1 if its side is the
        * hanging wall, −1 if the footwall. */
       double node_sign;
+      /** Where that node is (its side's mapped point; on a curved hanging
+       * face the coarser side's mapping puts `point` O(h³) away). */
+      const Point<dim> &node_position;
     };
 
     /** A visitor of the interface points (for_each_interface_point()). */

@@ -74,6 +74,13 @@ namespace lithostress
       return tractions[i];
     }
 
+    /** The fault's normal at point @p i's node (its tie's normal). */
+    const Tensor<1, dim> &
+    normal(const unsigned int i) const
+    {
+      return normals[i];
+    }
+
     /** Close every node: the elastic predictor of a solve. */
     void
     close_all()
