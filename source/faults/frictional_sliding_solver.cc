@@ -103,6 +103,14 @@ namespace lithostress
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
                         "must be positive");
+    for (const auto &[entry, value] :
+         {std::make_pair("Residual tolerance", parameters.residual_tolerance),
+          std::make_pair("Linear solver tolerance",
+                         parameters.linear_tolerance)})
+      if (!(value > 0))
+        throw_input_error(std::string("Faults/Sliding solver/") + entry,
+                          "must be positive (a tolerance of 0 is never "
+                          "reached)");
     prm.leave_subsection();
     prm.leave_subsection();
   }
