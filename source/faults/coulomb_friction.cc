@@ -25,44 +25,15 @@ namespace lithostress
                            const double p_old,
                            const double depth) const
   {
-    Response r;
-    r.normal_traction         = normal_stiffness * w_n;
-    r.effective_normal_stress = r.normal_traction - overburden(depth);
-    r.friction_limit =
-      friction_coefficient * std::max(0.0, -r.effective_normal_stress);
-    r.tangent[1][1]      = normal_stiffness;
-    const double trial_s = shear_stiffness * (w_s - p_old);
-    if (!slides)
-      {
-        r.state          = SlipState::stuck;
-        r.shear_traction = trial_s;
-        r.plastic_slip   = p_old;
-        r.tangent[0][0]  = shear_stiffness;
-      }
-    else if (r.effective_normal_stress >= 0)
-      {
-        // In tension: no shear; the slip follows the jump.
-        r.state          = SlipState::open;
-        r.shear_traction = 0;
-        r.plastic_slip   = w_s;
-      }
-    else if (std::abs(trial_s) <= r.friction_limit)
-      {
-        r.state          = SlipState::stuck;
-        r.shear_traction = trial_s;
-        r.plastic_slip   = p_old;
-        r.tangent[0][0]  = shear_stiffness;
-      }
-    else
-      {
-        // Back to the limit in the trial's direction; the limit grows
-        // with compression: dτ/dw_n = -sign(τ) μ k_n.
-        const double sign = trial_s > 0 ? 1. : -1.;
-        r.state           = SlipState::sliding;
-        r.shear_traction  = sign * r.friction_limit;
-        r.plastic_slip    = w_s - r.shear_traction / shear_stiffness;
-        r.tangent[0][1]   = -sign * friction_coefficient * normal_stiffness;
-      }
+    Response r      = with_normal_traction(normal_stiffness * w_n, depth);
+    r.tangent[1][1] = normal_stiffness;
+    // In tension: no shear. The limit grows with compression:
+    // dτ_F/dw_n = -μ k_n while sliding.
+    return_map(r,
+               w_s,
+               p_old,
+               r.effective_normal_stress >= 0,
+               friction_coefficient * normal_stiffness);
     return r;
   }
 
@@ -73,26 +44,39 @@ namespace lithostress
                                       const double p_old,
                                       const double depth) const
   {
+    Response r = with_normal_traction(closed ? t_n : overburden(depth), depth);
+    return_map(r, w_s, p_old, !closed || r.effective_normal_stress >= 0, 0);
+    return r;
+  }
+
+  CoulombFriction::Response
+  CoulombFriction::with_normal_traction(const double t_n,
+                                        const double depth) const
+  {
     Response r;
-    r.normal_traction         = closed ? t_n : overburden(depth);
-    r.effective_normal_stress = r.normal_traction - overburden(depth);
+    r.normal_traction         = t_n;
+    r.effective_normal_stress = t_n - overburden(depth);
     r.friction_limit =
       friction_coefficient * std::max(0.0, -r.effective_normal_stress);
+    return r;
+  }
+
+  void
+  CoulombFriction::return_map(Response    &r,
+                              const double w_s,
+                              const double p_old,
+                              const bool   open,
+                              const double limit_slope) const
+  {
     const double trial_s = shear_stiffness * (w_s - p_old);
-    if (!slides)
+    if (slides && open)
       {
-        r.state          = SlipState::stuck;
-        r.shear_traction = trial_s;
-        r.plastic_slip   = p_old;
-        r.tangent[0][0]  = shear_stiffness;
-      }
-    else if (!closed || r.effective_normal_stress >= 0)
-      {
+        // No shear; the slip follows the jump.
         r.state          = SlipState::open;
         r.shear_traction = 0;
         r.plastic_slip   = w_s;
       }
-    else if (std::abs(trial_s) <= r.friction_limit)
+    else if (!slides || std::abs(trial_s) <= r.friction_limit)
       {
         r.state          = SlipState::stuck;
         r.shear_traction = trial_s;
@@ -101,11 +85,12 @@ namespace lithostress
       }
     else
       {
+        // Back to the limit in the trial's direction.
         const double sign = trial_s > 0 ? 1. : -1.;
         r.state           = SlipState::sliding;
         r.shear_traction  = sign * r.friction_limit;
         r.plastic_slip    = w_s - r.shear_traction / shear_stiffness;
+        r.tangent[0][1]   = -sign * limit_slope;
       }
-    return r;
   }
 } // namespace lithostress

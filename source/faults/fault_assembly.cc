@@ -1,8 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <algorithm>
-
 #include <lithostress/faults/fault_interface.h>
 
 // FaultInterface's interface quadrature and face terms: the one loop over
@@ -17,13 +15,15 @@ namespace lithostress
      * (field 1 where it has one there, else field 0; PointValues::node):
      * the DoFs whose shape functions' jumps @p jump are ±e_d there (a
      * Lobatto point is a node of the finer side), of the field-1 DoFs
-     * [@p n_minus, n) first. Returns the sign of those jumps (0: no node). */
+     * [@p n_minus, n) first. Returns the sign of those jumps (0: no node);
+     * @p on_field_1 tells whose node it is. */
     template <int dim>
     double
     find_node(const std::vector<Tensor<1, dim>>          &jump,
               const std::vector<types::global_dof_index> &dofs,
               const unsigned int                          n_minus,
-              std::array<types::global_dof_index, dim>   &node)
+              std::array<types::global_dof_index, dim>   &node,
+              bool                                       &on_field_1)
     {
       const unsigned int n = jump.size();
       for (const bool field_1 : {true, false})
@@ -42,6 +42,7 @@ namespace lithostress
                   sign    = jump[i][d] > 0 ? 1 : -1;
                   ++found;
                 }
+          on_field_1 = field_1;
           if (found == dim)
             return sign;
         }
@@ -242,12 +243,11 @@ namespace lithostress
             Tensor<1, dim> w;
             for (unsigned int i = 0; i < n; ++i)
               w += values[i] * jump[i];
-            const double node_sign = find_node<dim>(jump, dofs, n_minus, node);
+            bool         on_field_1 = false;
+            const double node_sign =
+              find_node<dim>(jump, dofs, n_minus, node, on_field_1);
             const Point<dim> &node_position =
-              std::find(plus_dofs.begin(), plus_dofs.end(), node[0]) !=
-                  plus_dofs.end()
-                ? p->quadrature_point(qp)
-                : m->quadrature_point(q);
+              on_field_1 ? p->quadrature_point(qp) : m->quadrature_point(q);
             visitor(PointValues{index++,
                                 point,
                                 w,

@@ -1,5 +1,6 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/identity_matrix.h>
 
 #include <lithostress/faults/fault_interface.h>
 
@@ -137,6 +138,14 @@ namespace lithostress
           const std::array<Entries, dim>                 &sources,
           const std::array<double, dim>                  &jumps);
 
+      /** Every field-1 node j of the face (dofs_1, at @p x) := Σ_i m(j, i)
+       * field-0 node i (dofs_0) + jump: the field-0 trace interpolated at
+       * the field-1 nodes by @p m (the identity on faces of equal level). */
+      void
+      tie_field_1_nodes(const std::vector<Point<dim>> &x,
+                        const FullMatrix<double>      &m,
+                        const Jump                    &jump);
+
       /** The nodes of @p face in the order of the scalar element's face
        * DoFs: the vertices, then (Q2) the midpoint on the face's manifold. */
       std::vector<Point<dim>>
@@ -151,7 +160,9 @@ namespace lithostress
        * (measured: deal.II 9.4.1's FE_Q fills it by rows of the subface's
        * nodes). */
       std::array<FullMatrix<double>, GeometryInfo<dim>::max_children_per_face>
-                                           subface;
+        subface;
+      /** The identity: the two sides' nodes coincide. */
+      FullMatrix<double>                   same_nodes;
       std::vector<types::global_dof_index> dofs_0, dofs_1;
       const FaultTrace                    *contact_trace = nullptr;
       IsOpen                               open;
@@ -176,6 +187,7 @@ namespace lithostress
           subface[s].reinit(n_nodes, n_nodes);
           scalar.get_subface_interpolation_matrix(scalar, s, subface[s]);
         }
+      same_nodes = IdentityMatrix(n_nodes);
       dofs_0.resize(collection[0].n_dofs_per_face());
       dofs_1.resize(collection[1].n_dofs_per_face());
     }
@@ -258,20 +270,7 @@ namespace lithostress
     {
       cell->face(f)->get_dof_indices(dofs_0, 0);
       cell->face(f)->get_dof_indices(dofs_1, 1);
-      const auto x = node_positions(cell->face(f));
-      for (unsigned int j = 0; j < n_nodes; ++j)
-        {
-          std::array<types::global_dof_index, dim> targets;
-          std::array<Entries, dim>                 sources;
-          std::array<double, dim>                  jumps;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              targets[d] = dofs_1[table[1][d][j]];
-              sources[d] = {{dofs_0[table[0][d][j]], 1.0}};
-              jumps[d]   = jump(x[j], d);
-            }
-          tie(x[j], targets, sources, jumps);
-        }
+      tie_field_1_nodes(node_positions(cell->face(f)), same_nodes, jump);
     }
 
     template <int dim>
@@ -282,10 +281,20 @@ namespace lithostress
                                            const unsigned int   subface_no,
                                            const Jump          &jump)
     {
-      const FullMatrix<double> &m = subface[subface_no];
-      const auto                x = node_positions(cell->face(f));
       coarse_face->get_dof_indices(dofs_0, 0);
       cell->face(f)->get_dof_indices(dofs_1, 1);
+      tie_field_1_nodes(node_positions(cell->face(f)),
+                        subface[subface_no],
+                        jump);
+    }
+
+    template <int dim>
+    void
+    FaceNodeConstraints<dim>::tie_field_1_nodes(
+      const std::vector<Point<dim>> &x,
+      const FullMatrix<double>      &m,
+      const Jump                    &jump)
+    {
       for (unsigned int j = 0; j < n_nodes; ++j)
         {
           std::array<types::global_dof_index, dim> targets;

@@ -6,7 +6,6 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
@@ -314,12 +313,6 @@ namespace lithostress
       void
       add_interface_forces(const bool contact_normal);
 
-      /** The residual norm in exact contact (residual_norm()): the normal
-       * tractions from the residual without them, then the residual with
-       * them. */
-      double
-      contact_residual_norm();
-
       /** Exact contact: the bulk system with the active constraints
        * (ElasticAssembler; the constraints change with the open nodes). */
       void
@@ -567,12 +560,7 @@ namespace lithostress
     void
     SlidingContext<dim>::assemble_bulk_in_contact()
     {
-      contact->make_constraints(constraints, linearised.constraints);
-      ElasticAssembler<dim> assembler(fe_space,
-                                      problem.stress_model,
-                                      problem.loads);
-      assembler.set_history_strain(problem.history_strain);
-      assembler.assemble(dof_handler, linearised, true);
+      contact->assemble_bulk(problem, linearised);
       bulk_rhs = rhs;
     }
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/faults/normal_contact.h>
 
 namespace lithostress
@@ -51,20 +52,46 @@ namespace lithostress
 
   template <int dim>
   void
-  NormalContact<dim>::make_constraints(
-    const AffineConstraints<double> &base,
-    AffineConstraints<double>       &constraints) const
+  NormalContact<dim>::tie(
+    const AffineConstraints<double>                  &base,
+    const typename FaultInterface<dim>::ContactState &is_open,
+    AffineConstraints<double>                        &constraints) const
   {
     constraints.clear();
     constraints.reinit(locally_relevant);
     constraints.merge(base);
-    faults.add_contact_constraints(dof_handler,
-                                   fe_space,
-                                   constraints,
-                                   [this](const types::global_dof_index node) {
-                                     return open.count(node) > 0;
-                                   });
+    faults.add_contact_constraints(dof_handler, fe_space, constraints, is_open);
     constraints.close();
+  }
+
+  template <int dim>
+  void
+  NormalContact<dim>::make_constraints(
+    const AffineConstraints<double> &base,
+    AffineConstraints<double>       &constraints) const
+  {
+    tie(
+      base,
+      [this](const types::global_dof_index node) {
+        return open.count(node) > 0;
+      },
+      constraints);
+  }
+
+  template <int dim>
+  void
+  NormalContact<dim>::assemble_bulk(const DiscreteProblem<dim> &problem,
+                                    LinearSystem<dim>          &system)
+  {
+    // The constraints change only with the open nodes.
+    if (constraints_made_for != version)
+      make_constraints(problem.system.constraints, system.constraints);
+    constraints_made_for = version;
+    ElasticAssembler<dim> assembler(fe_space,
+                                    problem.stress_model,
+                                    problem.loads);
+    assembler.set_history_strain(problem.history_strain);
+    assembler.assemble(dof_handler, system, true);
   }
 
   template <int dim>
@@ -76,15 +103,8 @@ namespace lithostress
     // Every node tied: the couplings the ties make. The constrained rows
     // are kept as well: they are the open nodes' rows.
     AffineConstraints<double> all_closed;
-    all_closed.reinit(locally_relevant);
-    all_closed.merge(base);
-    faults.add_contact_constraints(dof_handler,
-                                   fe_space,
-                                   all_closed,
-                                   [](const types::global_dof_index) {
-                                     return false;
-                                   });
-    all_closed.close();
+    tie(
+      base, [](const types::global_dof_index) { return false; }, all_closed);
     TrilinosWrappers::SparsityPattern pattern(locally_owned,
                                               locally_owned,
                                               locally_relevant,
@@ -142,6 +162,8 @@ namespace lithostress
     for (const auto &part : Utilities::MPI::all_gather(communicator, closing))
       for (const types::global_dof_index key : part)
         changed = open.erase(key) > 0 || changed;
+    if (changed)
+      ++version;
     return changed;
   }
 

@@ -3,7 +3,6 @@
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/faults/normal_contact.h>
 #include <lithostress/refinement/dual_solutions.h>
 #include <lithostress/solvers/amg_solver.h>
@@ -45,12 +44,8 @@ namespace lithostress
                                        problem.fe_space,
                                        system.locally_owned,
                                        system.locally_relevant);
-            contact.make_constraints(system.constraints, stuck.constraints);
             contact.reinit_matrix(system.constraints, stuck.matrix);
-            ElasticAssembler<dim> assembler(problem.fe_space,
-                                            problem.stress_model,
-                                            problem.loads);
-            assembler.assemble(problem.dof_handler, stuck, true);
+            contact.assemble_bulk(problem, stuck);
           }
         else
           {
@@ -120,8 +115,20 @@ namespace lithostress
             return 0;
           }
         SolverControl control(5000, 1e-10 * rhs.l2_norm(), false, false);
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        cg.solve(stuck.matrix, z, rhs, amg);
+        try
+          {
+            SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+            cg.solve(stuck.matrix, z, rhs, amg);
+          }
+        catch (const SolverControl::NoConvergence &exc)
+          {
+            rethrow_solver_failure(exc,
+                                   problem.dof_handler.get_communicator(),
+                                   "CG with AMG (dual problems)",
+                                   rhs.l2_norm(),
+                                   "use Mesh refinement/Indicator = "
+                                   "Kelly");
+          }
         return control.last_step();
       }
 

@@ -107,6 +107,24 @@ namespace lithostress
                        const bool   closed,
                        const double p_old,
                        const double depth) const;
+
+  private:
+    /** A response with the model's normal traction @p t_n at @p depth:
+     * σ_n,eff and τ_F. */
+    Response
+    with_normal_traction(const double t_n, const double depth) const;
+
+    /** The return mapping of the shear from @p p_old at the jump @p w_s,
+     * into @p r (which has τ_F): @p open (no shear, if the law slides),
+     * stuck, or sliding at the limit, whose derivative by w_n is
+     * @p limit_slope (μ k_n with the normal spring, 0 in exact contact,
+     * where the limit is taken at the given reaction). */
+    void
+    return_map(Response    &r,
+               const double w_s,
+               const double p_old,
+               const bool   open,
+               const double limit_slope) const;
   };
 } // namespace lithostress
 

@@ -9,6 +9,7 @@
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/faults/coulomb_friction.h>
 #include <lithostress/faults/fault_interface.h>
+#include <lithostress/solvers/linear_solver.h>
 
 #include <array>
 #include <deque>
@@ -81,12 +82,6 @@ namespace lithostress
       return normals[i];
     }
 
-    /** Close every node: the elastic predictor of a solve. */
-    void
-    close_all()
-    {
-      open.clear();
-    }
 
     /** The number of open nodes (the same on every rank). */
     unsigned int
@@ -100,6 +95,14 @@ namespace lithostress
     void
     make_constraints(const AffineConstraints<double> &base,
                      AffineConstraints<double>       &constraints) const;
+
+    /** The bulk of @p problem (cells and loads, with its history strain)
+     * into @p system (whose matrix has reinit_matrix()'s sparsity), with
+     * the problem's constraints and the closed nodes' ties, which are made
+     * again only if the open nodes changed since the last call. */
+    void
+    assemble_bulk(const DiscreteProblem<dim> &problem,
+                  LinearSystem<dim>          &system);
 
     /** Give @p matrix a sparsity that holds the cells' terms and the
      * faults' face terms condensed with @p base and the ties of any set of
@@ -138,6 +141,13 @@ namespace lithostress
     accelerate(const bool restart);
 
   private:
+    /** @p constraints := @p base with the ties of the nodes @p is_open
+     * does not call open, closed. */
+    void
+    tie(const AffineConstraints<double>                  &base,
+        const typename FaultInterface<dim>::ContactState &is_open,
+        AffineConstraints<double>                        &constraints) const;
+
     const FaultInterface<dim>     &faults;
     const DoFHandler<dim>         &dof_handler;
     const FiniteElementSpace<dim> &fe_space;
@@ -153,8 +163,11 @@ namespace lithostress
     /** Σ JxW of the points at each node (indexed by the node's key). */
     TrilinosWrappers::MPI::Vector weight;
     std::vector<double>           tractions;
-    /** The keys of the open nodes. */
+    /** The keys of the open nodes, and a count of their changes. */
     std::set<types::global_dof_index> open;
+    unsigned int                      version = 0;
+    /** The version assemble_bulk() last made constraints for. */
+    unsigned int constraints_made_for = numbers::invalid_unsigned_int;
     /** accelerate()'s state: the tractions the last linearisation used
      * (empty: none yet), the last reactions and residuals, and the
      * differences of the last iterates' reactions and residuals. */
