@@ -1,8 +1,7 @@
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
+
 
 #include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/faults/normal_contact.h>
@@ -83,9 +82,18 @@ namespace lithostress
   NormalContact<dim>::assemble_bulk(const DiscreteProblem<dim> &problem,
                                     LinearSystem<dim>          &system)
   {
-    // The constraints change only with the open nodes.
+    // The constraints change only with the open nodes; the matrix gets
+    // their sparsity (constrained rows keep only their diagonal), from
+    // the cells and the faults' face pairs.
     if (constraints_made_for != version)
-      make_constraints(problem.system.constraints, system.constraints);
+      {
+        make_constraints(problem.system.constraints, system.constraints);
+        system.locally_owned = locally_owned;
+        system.reinit(dof_handler,
+                      communicator,
+                      true,
+                      faults.interface_cliques(dof_handler));
+      }
     constraints_made_for = version;
     ElasticAssembler<dim> assembler(fe_space,
                                     problem.stress_model,
@@ -94,32 +102,6 @@ namespace lithostress
     assembler.assemble(dof_handler, system, true);
   }
 
-  template <int dim>
-  void
-  NormalContact<dim>::reinit_matrix(
-    const AffineConstraints<double> &base,
-    TrilinosWrappers::SparseMatrix  &matrix) const
-  {
-    // Every node tied: the couplings the ties make. The constrained rows
-    // are kept as well: they are the open nodes' rows.
-    AffineConstraints<double> all_closed;
-    tie(
-      base, [](const types::global_dof_index) { return false; }, all_closed);
-    TrilinosWrappers::SparsityPattern pattern(locally_owned,
-                                              locally_owned,
-                                              locally_relevant,
-                                              communicator);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    pattern,
-                                    all_closed,
-                                    true,
-                                    Utilities::MPI::this_mpi_process(
-                                      communicator));
-    for (const auto &clique : faults.interface_cliques(dof_handler))
-      all_closed.add_entries_local_to_global(clique, pattern, true);
-    pattern.compress();
-    matrix.reinit(pattern);
-  }
 
   template <int dim>
   void
@@ -176,8 +158,9 @@ namespace lithostress
     for (unsigned int i = 0; i < tractions.size(); ++i)
       if (in_contact[i] && closed(i))
         g[i] = tractions[i];
-    if (input.empty() || restart)
+    if (accelerated < 0 || restart)
       {
+        accelerated = 0;
         dG.clear();
         dF.clear();
         last_f.clear();
@@ -188,7 +171,7 @@ namespace lithostress
     std::vector<double> f(g.size());
     for (unsigned int i = 0; i < g.size(); ++i)
       f[i] = g[i] - input[i];
-    if (!last_f.empty())
+    if (accelerated++ > 0)
       {
         std::vector<double> df(g.size()), dg(g.size());
         for (unsigned int i = 0; i < g.size(); ++i)

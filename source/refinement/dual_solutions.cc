@@ -7,6 +7,7 @@
 #include <lithostress/refinement/dual_solutions.h>
 #include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/rigid_body_modes.h>
+#include <lithostress/solvers/sparse_cholesky.h>
 
 #include <memory>
 
@@ -18,9 +19,10 @@ namespace lithostress
      * The dual problems' operator where the faults need the sliding
      * solver: the bulk with the stuck (elastic) face terms of every fault
      * and, in exact contact, every node closed (NormalContact's ties). In
-     * exact contact it is symmetric and without stiff springs: CG with the
-     * elasticity AMG; with the thesis's normal spring a sparse direct
-     * factorisation, once for all goals.
+     * exact contact it is symmetric and without stiff springs: its sparse
+     * Cholesky factor on one rank, CG with the elasticity AMG on more;
+     * with the thesis's normal spring a sparse LU factorisation. Either
+     * factorisation is made once for all goals.
      */
     template <int dim>
     class StuckInterfaceOperator
@@ -44,7 +46,6 @@ namespace lithostress
                                        problem.fe_space,
                                        system.locally_owned,
                                        system.locally_relevant);
-            contact.reinit_matrix(system.constraints, stuck.matrix);
             contact.assemble_bulk(problem, stuck);
           }
         else
@@ -53,7 +54,15 @@ namespace lithostress
             stuck.matrix.copy_from(system.matrix);
           }
         add_stuck_face_terms();
-        if (faults.contact())
+        // Exact contact leaves the stuck tangent symmetric: on one rank its
+        // Cholesky factor, on more the AMG.
+        if (faults.contact() && Utilities::MPI::n_mpi_processes(
+                                  problem.dof_handler.get_communicator()) == 1)
+          {
+            cholesky = std::make_unique<SparseCholesky>();
+            cholesky->factorize(stuck.matrix);
+          }
+        else if (faults.contact())
           {
             modes =
               make_rigid_body_modes(problem.dof_handler,
@@ -85,8 +94,9 @@ namespace lithostress
       std::string
       name() const
       {
-        return faults.contact() ? "CG with AMG (dual, contact)"
-                                : "direct (dual)";
+        return cholesky           ? "Cholesky (dual, contact)"
+               : faults.contact() ? "CG with AMG (dual, contact)"
+                                  : "direct (dual)";
       }
 
       /** The constraints of the dual problems. */
@@ -112,6 +122,11 @@ namespace lithostress
         if (direct)
           {
             direct->solve(z, rhs);
+            return 0;
+          }
+        if (cholesky)
+          {
+            cholesky->vmult(z, rhs);
             return 0;
           }
         SolverControl control(5000, 1e-10 * rhs.l2_norm(), false, false);
@@ -162,6 +177,7 @@ namespace lithostress
       TrilinosWrappers::PreconditionAMG               amg;
       std::unique_ptr<SolverControl>                  control;
       std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
+      std::unique_ptr<SparseCholesky>                 cholesky;
     };
   } // namespace
 

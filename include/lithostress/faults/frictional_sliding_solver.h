@@ -70,8 +70,18 @@ namespace lithostress
       double       convergence_factor     = 1;
       bool         line_search            = true;
       double       linear_tolerance       = 1e-11;
-      /** Solve each Newton step directly (Amesos KLU) instead of GMRES. */
+      /** Newton: each step's linear solve stops at this times the current
+       * nonlinear residual (inexact Newton), if that is above
+       * linear_tolerance times its right-hand side. */
+      double linear_reduction = 1e-3;
+      /** The preconditioner of each step's Krylov solve: the elasticity
+       * AMG, or a sparse factorisation (Amesos KLU) of the tangent, kept
+       * while the active constraints do not change. */
       bool direct_solver = false;
+      /** `automatic`: the factorisation on one rank up to direct_limit
+       * DoFs, the AMG above and on more ranks. */
+      bool   automatic    = true;
+      double direct_limit = 5e5;
     };
 
     /** Declare `Faults/Sliding solver`: the method, its tolerances and

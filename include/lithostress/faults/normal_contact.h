@@ -90,6 +90,14 @@ namespace lithostress
       return open.size();
     }
 
+    /** A count of the changes of the open nodes: the active constraints
+     * are the same while it is. */
+    unsigned int
+    open_set_version() const
+    {
+      return version;
+    }
+
     /** @p constraints := the problem's @p base constraints with the ties
      * of the closed nodes, closed. */
     void
@@ -97,19 +105,13 @@ namespace lithostress
                      AffineConstraints<double>       &constraints) const;
 
     /** The bulk of @p problem (cells and loads, with its history strain)
-     * into @p system (whose matrix has reinit_matrix()'s sparsity), with
-     * the problem's constraints and the closed nodes' ties, which are made
-     * again only if the open nodes changed since the last call. */
+     * into @p system with the problem's constraints and the closed nodes'
+     * ties; the ties and the matrix's sparsity are made again only if the
+     * open nodes changed since the last call. */
     void
     assemble_bulk(const DiscreteProblem<dim> &problem,
                   LinearSystem<dim>          &system);
 
-    /** Give @p matrix a sparsity that holds the cells' terms and the
-     * faults' face terms condensed with @p base and the ties of any set of
-     * closed nodes (all closed, and every node open). */
-    void
-    reinit_matrix(const AffineConstraints<double> &base,
-                  TrilinosWrappers::SparseMatrix  &matrix) const;
 
     /** The normal tractions of the closed points from @p residual (ghosted:
      * K u − f plus the faults' forces other than the contact's, condensed
@@ -173,6 +175,9 @@ namespace lithostress
      * differences of the last iterates' reactions and residuals. */
     std::vector<double>             input, last_g, last_f;
     std::deque<std::vector<double>> dG, dF;
+    /** The acceleration's iterates since its last restart, -1 before the
+     * first (the same on every rank, also on one without points). */
+    int accelerated = -1;
   };
 } // namespace lithostress
 

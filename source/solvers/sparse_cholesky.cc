@@ -1,0 +1,129 @@
+#include <lithostress/base/input_error.h>
+#include <lithostress/solvers/sparse_cholesky.h>
+
+#include <suitesparse/cholmod.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace lithostress
+{
+  /** CHOLMOD's workspace, the matrix in its compressed-column form and the
+   * factor (64-bit indices: the cholmod_l_ routines). */
+  struct SparseCholesky::Data
+  {
+    cholmod_common   common;
+    cholmod_factor  *factor = nullptr;
+    SuiteSparse_long n = 0, nnz = 0;
+    /** A hash of the sparsity the factor's ordering was made for. */
+    std::size_t structure = 0;
+  };
+
+  SparseCholesky::SparseCholesky()
+      : data(std::make_unique<Data>())
+  {
+    cholmod_l_start(&data->common);
+  }
+
+  SparseCholesky::~SparseCholesky()
+  {
+    if (data->factor)
+      cholmod_l_free_factor(&data->factor, &data->common);
+    cholmod_l_finish(&data->common);
+  }
+
+  void
+  SparseCholesky::factorize(const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
+    AssertThrow(A.Comm().NumProc() == 1,
+                ExcMessage("SparseCholesky works on one rank"));
+    const SuiteSparse_long n   = A.NumMyRows();
+    const SuiteSparse_long nnz = A.NumMyNonzeros();
+    // A row of the symmetric matrix is a column of it: the rows, with
+    // global column indices, as compressed columns (stype > 0: CHOLMOD
+    // reads the entries on and above the diagonal).
+    cholmod_sparse *csc = cholmod_l_allocate_sparse(
+      n, n, nnz, false, true, 1, CHOLMOD_REAL, &data->common);
+    if (!csc)
+      throw ComputationError("the sparse Cholesky factorisation could not "
+                             "allocate the matrix (" +
+                             std::to_string(nnz) + " entries)");
+    auto *p = static_cast<SuiteSparse_long *>(csc->p);
+    auto *i = static_cast<SuiteSparse_long *>(csc->i);
+    auto *x = static_cast<double *>(csc->x);
+    p[0]    = 0;
+    for (int row = 0; row < n; ++row)
+      {
+        int     length;
+        double *values;
+        int    *columns;
+        A.ExtractMyRowView(row, length, values, columns);
+        AssertThrow(A.GRID64(row) == row,
+                    ExcMessage("SparseCholesky expects rows 0, 1, ..."));
+        SuiteSparse_long k = p[row];
+        for (int j = 0; j < length; ++j)
+          {
+            i[k]   = A.GCID64(columns[j]);
+            x[k++] = values[j];
+          }
+        p[row + 1] = k;
+      }
+    // The ordering and symbolic factorisation once per sparsity.
+    std::size_t structure = std::hash<SuiteSparse_long>()(n);
+    for (SuiteSparse_long k = 0; k < nnz; ++k)
+      structure = structure * 1000003 ^ std::hash<SuiteSparse_long>()(i[k]);
+    for (SuiteSparse_long k = 0; k <= n; ++k)
+      structure = structure * 1000003 ^ std::hash<SuiteSparse_long>()(p[k]);
+    if (data->factor && structure != data->structure)
+      cholmod_l_free_factor(&data->factor, &data->common);
+    data->structure = structure;
+    if (!data->factor)
+      data->factor = cholmod_l_analyze(csc, &data->common);
+    data->n   = n;
+    data->nnz = nnz;
+    const bool done =
+      data->factor && cholmod_l_factorize(csc, data->factor, &data->common);
+    cholmod_l_free_sparse(&csc, &data->common);
+    if (!done || data->common.status == CHOLMOD_NOT_POSDEF)
+      throw ComputationError(
+        data->common.status == CHOLMOD_NOT_POSDEF
+          ? "the sparse Cholesky factorisation found the matrix not positive "
+            "definite (a model without enough boundary conditions?)"
+          : "the sparse Cholesky factorisation failed (CHOLMOD status " +
+              std::to_string(data->common.status) + ", out of memory?)");
+  }
+
+  void
+  SparseCholesky::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                        const TrilinosWrappers::MPI::Vector &src) const
+  {
+    cholmod_dense b;
+    b.nrow  = data->n;
+    b.ncol  = 1;
+    b.nzmax = data->n;
+    b.d     = data->n;
+    b.x     = const_cast<double *>(src.trilinos_vector()[0]);
+    b.z     = nullptr;
+    b.xtype = CHOLMOD_REAL;
+    b.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense *solution =
+      cholmod_l_solve(CHOLMOD_A, data->factor, &b, &data->common);
+    AssertThrow(solution, ExcMessage("CHOLMOD's solve failed"));
+    const double *values = static_cast<const double *>(solution->x);
+    std::copy(values, values + data->n, dst.trilinos_vector()[0]);
+    cholmod_l_free_dense(&solution, &data->common);
+  }
+
+  double
+  SparseCholesky::memory_consumption() const
+  {
+    if (!data->factor)
+      return 0;
+    // Values and row indices of the factor.
+    return (data->factor->is_super ? data->factor->xsize
+                                   : data->factor->nzmax) *
+           (sizeof(double) + sizeof(SuiteSparse_long));
+  }
+} // namespace lithostress
