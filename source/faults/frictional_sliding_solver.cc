@@ -75,13 +75,14 @@ namespace lithostress
     prm.declare_entry("Linear solver reduction",
                       "1e-3",
                       Patterns::Double(0, 1),
-                      "Newton: each step's linear solve stops once its "
-                      "residual is below this times the current nonlinear "
-                      "residual (an inexact Newton method; Eisenstat & "
-                      "Walker 1996): the early steps, whose linearisation "
-                      "is still far from the solution, are not solved to "
-                      "round-off. 0 solves every step to the Linear solver "
-                      "tolerance.");
+                      "Newton: while the points' states (stuck, sliding, "
+                      "open) change, each step's linear solve stops once "
+                      "its residual is below this times the current "
+                      "nonlinear residual (an inexact Newton method; "
+                      "Eisenstat & Walker 1996): those steps are not solved "
+                      "to round-off. A step whose states stood still may be "
+                      "the last and is solved to the Linear solver "
+                      "tolerance; so is every step with 0.");
     prm.declare_entry("Linear solver",
                       "automatic",
                       Patterns::Selection("automatic|AMG|direct"),
@@ -276,6 +277,21 @@ namespace lithostress
       }
 
 
+      /** Whether a point's state at the last evaluated iterate differs
+       * from the last call's (true at the first call), on any rank. */
+      bool
+      states_changed()
+      {
+        bool changed = newton_states.size() != responses.size();
+        newton_states.resize(responses.size());
+        for (unsigned int i = 0; i < responses.size(); ++i)
+          {
+            changed = changed || responses[i].state != newton_states[i];
+            newton_states[i] = responses[i].state;
+          }
+        return Utilities::MPI::logical_or(changed, communicator);
+      }
+
       /** "<n> sliding, <m> open of <N> points" over all ranks. */
       std::string
       count_states() const;
@@ -316,8 +332,9 @@ namespace lithostress
       std::vector<CoulombFriction::Response> responses;
       /** w_n at each point at the last evaluated iterate. */
       std::vector<double> normal_jumps;
-      /** The states at the last accelerate_tractions(). */
-      std::vector<SlipState> last_states;
+      /** The states at the last accelerate_tractions() and the last
+       * states_changed(). */
+      std::vector<SlipState> last_states, newton_states;
       /** Exact normal contact, if a fault has it. */
       std::unique_ptr<NormalContact<dim>> contact;
       /** The linearised system: its matrix, right-hand side and (exact
@@ -888,8 +905,13 @@ namespace lithostress
             c.set_up([&c](const PointValues &values,
                           Tensor<1, dim>    &t,
                           Tensor<2, dim> &D) { c.newton_law(values, t, D); });
+          // Inexact while the states change; once they stand still the
+          // step may be the last one (the law is piecewise linear), and is
+          // solved to the Linear solver tolerance.
           x         = c.u;
-          c.forcing = settings.linear_reduction * c.r_norm;
+          c.forcing = c.states_changed() || set_changed
+                        ? settings.linear_reduction * c.r_norm
+                        : 0.;
           c.linear_solve(x);
           step = x;
           step -= c.u;
