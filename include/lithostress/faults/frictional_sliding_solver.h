@@ -81,7 +81,7 @@ namespace lithostress
       /** `automatic`: the factorisation on one rank up to direct_limit
        * DoFs, the AMG above and on more ranks. */
       bool   automatic    = true;
-      double direct_limit = 5e5;
+      double direct_limit = 2e6;
     };
 
     /** Declare `Faults/Sliding solver`: the method, its tolerances and
