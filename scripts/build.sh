@@ -6,8 +6,13 @@ set -euo pipefail
 dir=${1:-build}
 type=${2:-Release}
 root=$(cd "$(dirname "$0")/.." && pwd)
-mkdir -p "$root/$dir"
-cd "$root/$dir"
+# A relative <dir> is inside the source tree, an absolute one is taken as is.
+case "$dir" in
+  /*) path=$dir ;;
+  *) path=$root/$dir ;;
+esac
+mkdir -p "$path"
+cd "$path"
 sanitize=${LITHOSTRESS_SANITIZE:-OFF}
 simd=${LITHOSTRESS_SIMD:-OFF}
 if [ ! -f CMakeCache.txt ] || ! grep -q "CMAKE_BUILD_TYPE:STRING=$type" CMakeCache.txt ||
@@ -19,4 +24,4 @@ fi
 # Build every target (the program and the unit-test programs); progress
 # lines are filtered, a failing build still fails this script (pipefail).
 make -j"$(nproc)" --no-print-directory 2>&1 | { grep -v "^\[" || true; }
-test -x "$root/$dir/lithostress"
+test -x "$path/lithostress"
