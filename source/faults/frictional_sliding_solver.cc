@@ -125,8 +125,10 @@ namespace lithostress
     parameters.line_search        = prm.get_bool("Line search");
     parameters.linear_tolerance   = prm.get_double("Linear solver tolerance");
     parameters.linear_reduction   = prm.get_double("Linear solver reduction");
-    parameters.direct_solver      = prm.get("Linear solver") == "direct";
-    parameters.automatic          = prm.get("Linear solver") == "automatic";
+    const std::string solver      = prm.get("Linear solver");
+    parameters.preconditioner     = solver == "direct" ? Preconditioner::direct
+                                    : solver == "AMG"  ? Preconditioner::amg
+                                                      : Preconditioner::automatic;
     parameters.direct_limit       = prm.get_double("Direct solver limit");
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
@@ -247,6 +249,25 @@ namespace lithostress
       void
       set_up(const Law &law);
 
+      /** Bytes of the factorisation's factor, where it can be measured
+       * (the Cholesky factor), else 0. */
+      double
+      preconditioner_memory() const
+      {
+        return cholesky ? cholesky->memory_consumption() : 0.;
+      }
+
+      /** rhs := bulk_rhs, ready for additions on every rank. */
+      void
+      reset_rhs()
+      {
+        rhs = bulk_rhs;
+        // A copy between different maps leaves a pending insertion, which
+        // the first addition would flush collectively: flush it here, on
+        // every rank (a rank without fault points adds nothing).
+        rhs.compress(VectorOperation::insert);
+      }
+
       /** The right-hand side with the affine part of @p law at zero jump
        * (the thesis method: only the slip changes between its solves). */
       void
@@ -261,22 +282,14 @@ namespace lithostress
       linear_solve(TrilinosWrappers::MPI::Vector &x);
 
       /** Exact contact: the normal tractions the next linearisation takes
-       * (NormalContact::accelerate()), afresh if @p set_changed or a
-       * point's state changed since the last call. */
+       * (NormalContact::accelerate()), afresh if @p restart (a state or
+       * the active set changed). */
       void
-      accelerate_tractions(const bool set_changed)
+      accelerate_tractions(const bool restart)
       {
-        if (!contact)
-          return;
-        bool changed = set_changed || last_states.size() != responses.size();
-        for (unsigned int i = 0; !changed && i < responses.size(); ++i)
-          changed = responses[i].state != last_states[i];
-        last_states.resize(responses.size());
-        for (unsigned int i = 0; i < responses.size(); ++i)
-          last_states[i] = responses[i].state;
-        contact->accelerate(Utilities::MPI::logical_or(changed, communicator));
+        if (contact)
+          contact->accelerate(restart);
       }
-
 
       /** Whether a point's state at the last evaluated iterate differs
        * from the last call's (true at the first call), on any rank. */
@@ -333,9 +346,8 @@ namespace lithostress
       std::vector<CoulombFriction::Response> responses;
       /** w_n at each point at the last evaluated iterate. */
       std::vector<double> normal_jumps;
-      /** The states at the last accelerate_tractions() and the last
-       * states_changed(). */
-      std::vector<SlipState> last_states, newton_states;
+      /** The states at the last states_changed(). */
+      std::vector<SlipState> newton_states;
       /** Exact normal contact, if a fault has it. */
       std::unique_ptr<NormalContact<dim>> contact;
       /** The linearised system: its matrix, right-hand side and (exact
@@ -481,8 +493,10 @@ namespace lithostress
       // has not converged after 300 iterations goes on with the Chebyshev
       // smoother. Neither is symmetric here: every solve is GMRES.
       ilu_settings.smoother = "ILU";
-      direct                = settings.direct_solver ||
-               (settings.automatic &&
+      using Preconditioner =
+        typename FrictionalSlidingSolver<dim>::Preconditioner;
+      direct = settings.preconditioner == Preconditioner::direct ||
+               (settings.preconditioner == Preconditioner::automatic &&
                 Utilities::MPI::n_mpi_processes(communicator) == 1 &&
                 dof_handler.n_dofs() <= settings.direct_limit);
       assembled_tangents.resize(n_points);
@@ -640,11 +654,7 @@ namespace lithostress
                     Tensor<2, dim>());
           assembled = true;
         }
-      rhs = bulk_rhs;
-      // A copy between different maps leaves a pending insertion, which
-      // the first addition would flush collectively: flush it here, on
-      // every rank (a rank without fault points adds nothing).
-      rhs.compress(VectorOperation::insert);
+      reset_rhs();
       // The matrix gets the change of the interface tangent, the
       // right-hand side the whole affine part (and the whole tangent's
       // share of the constraints' inhomogeneities).
@@ -726,11 +736,7 @@ namespace lithostress
     void
     SlidingContext<dim>::assemble_rhs(const Law &law)
     {
-      rhs = bulk_rhs;
-      // A copy between different maps leaves a pending insertion, which
-      // the first addition would flush collectively: flush it here, on
-      // every rank (a rank without fault points adds nothing).
-      rhs.compress(VectorOperation::insert);
+      reset_rhs();
       typename FaultInterface<dim>::FaceTerms terms(fe_space);
       faults.for_each_interface_point(
         dof_handler, fe_space, nullptr, [&](const PointValues &values) {
@@ -893,10 +899,10 @@ namespace lithostress
       const auto                   &settings = c.settings;
       TrilinosWrappers::MPI::Vector x(c.u), step(c.u), trial(c.u);
       c.r_norm = c.residual_norm(c.u);
-      // Whether the last iteration changed exact contact's open nodes: the
+      // Whether the last iteration changed exact contact's open nodes (the
       // next step satisfies other constraints than the iterate, and is
-      // taken whole.
-      bool set_changed = false;
+      // taken whole), and whether it changed them or a point's state.
+      bool set_changed = false, changed = true;
       for (c.iteration = 1; c.iteration <= settings.max_iterations;
            ++c.iteration)
         {
@@ -910,9 +916,7 @@ namespace lithostress
           // step may be the last one (the law is piecewise linear), and is
           // solved to the Linear solver tolerance.
           x         = c.u;
-          c.forcing = c.states_changed() || set_changed
-                        ? settings.linear_reduction * c.r_norm
-                        : 0.;
+          c.forcing = changed ? settings.linear_reduction * c.r_norm : 0.;
           c.linear_solve(x);
           step = x;
           step -= c.u;
@@ -930,6 +934,7 @@ namespace lithostress
           c.u         = trial;
           c.r_norm    = trial_norm;
           set_changed = c.update_active_set();
+          changed     = c.states_changed() || set_changed;
           if (!std::isfinite(c.r_norm))
             throw ComputationError(
               "the Newton iteration for the sliding on " +
@@ -946,7 +951,7 @@ namespace lithostress
           if (c.r_norm <= settings.residual_tolerance * c.f &&
               c.excess <= settings.excess_shear_tolerance && !set_changed)
             return true;
-          c.accelerate_tractions(set_changed);
+          c.accelerate_tractions(changed);
         }
       return false;
     }
@@ -1091,6 +1096,7 @@ namespace lithostress
       std::min(c.iteration, parameters.max_iterations);
     report.final_residual = c.r_norm / c.f;
     report.solve_time     = timer.wall_time();
+    report.memory_bytes   = c.preconditioner_memory();
     report.phases         = {{"sliding: assembly", c.time_assembly},
                              {"sliding: preconditioner set-up", c.time_preconditioner},
                              {"sliding: Krylov solves", c.time_solve},

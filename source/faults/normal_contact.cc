@@ -2,7 +2,6 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-
 #include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/faults/normal_contact.h>
 
@@ -51,30 +50,20 @@ namespace lithostress
 
   template <int dim>
   void
-  NormalContact<dim>::tie(
-    const AffineConstraints<double>                  &base,
-    const typename FaultInterface<dim>::ContactState &is_open,
-    AffineConstraints<double>                        &constraints) const
-  {
-    constraints.clear();
-    constraints.reinit(locally_relevant);
-    constraints.merge(base);
-    faults.add_contact_constraints(dof_handler, fe_space, constraints, is_open);
-    constraints.close();
-  }
-
-  template <int dim>
-  void
   NormalContact<dim>::make_constraints(
     const AffineConstraints<double> &base,
     AffineConstraints<double>       &constraints) const
   {
-    tie(
-      base,
-      [this](const types::global_dof_index node) {
-        return open.count(node) > 0;
-      },
-      constraints);
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    constraints.merge(base);
+    faults.add_contact_constraints(dof_handler,
+                                   fe_space,
+                                   constraints,
+                                   [this](const types::global_dof_index node) {
+                                     return open.count(node) > 0;
+                                   });
+    constraints.close();
   }
 
   template <int dim>

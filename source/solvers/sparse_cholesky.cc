@@ -15,7 +15,7 @@ namespace lithostress
   {
     cholmod_common   common;
     cholmod_factor  *factor = nullptr;
-    SuiteSparse_long n = 0, nnz = 0;
+    SuiteSparse_long n      = 0;
     /** A hash of the sparsity the factor's ordering was made for. */
     std::size_t structure = 0;
   };
@@ -81,8 +81,7 @@ namespace lithostress
     data->structure = structure;
     if (!data->factor)
       data->factor = cholmod_l_analyze(csc, &data->common);
-    data->n   = n;
-    data->nnz = nnz;
+    data->n = n;
     const bool done =
       data->factor && cholmod_l_factorize(csc, data->factor, &data->common);
     cholmod_l_free_sparse(&csc, &data->common);

@@ -59,6 +59,16 @@ namespace lithostress
       thesis
     };
 
+    /** The preconditioner of the sliding steps' Krylov solves: the
+     * elasticity AMG, or a sparse factorisation of the tangent kept while
+     * it pays (Cholesky in exact contact on one rank, else Amesos KLU). */
+    enum class Preconditioner
+    {
+      automatic,
+      amg,
+      direct
+    };
+
     /** The `Faults/Sliding solver` entries (thesis §5.5's convergence
      * factor among them). */
     struct Settings
@@ -70,18 +80,16 @@ namespace lithostress
       double       convergence_factor     = 1;
       bool         line_search            = true;
       double       linear_tolerance       = 1e-11;
-      /** Newton: each step's linear solve stops at this times the current
-       * nonlinear residual (inexact Newton), if that is above
-       * linear_tolerance times its right-hand side. */
+      /** Newton, while the points' states change: each step's linear
+       * solve stops at this times the current nonlinear residual (inexact
+       * Newton), if that is above linear_tolerance times its right-hand
+       * side. */
       double linear_reduction = 1e-3;
-      /** The preconditioner of each step's Krylov solve: the elasticity
-       * AMG, or a sparse factorisation (Amesos KLU) of the tangent, kept
-       * while the active constraints do not change. */
-      bool direct_solver = false;
-      /** `automatic`: the factorisation on one rank up to direct_limit
-       * DoFs, the AMG above and on more ranks. */
-      bool   automatic    = true;
-      double direct_limit = 2e6;
+      /** The preconditioner of each step's Krylov solve (`Linear
+       * solver`); automatic: the factorisation on one rank up to
+       * direct_limit DoFs, the AMG above and on more ranks. */
+      Preconditioner preconditioner = Preconditioner::automatic;
+      double         direct_limit   = 2e6;
     };
 
     /** Declare `Faults/Sliding solver`: the method, its tolerances and

@@ -98,11 +98,6 @@ namespace lithostress
       return version;
     }
 
-    /** @p constraints := the problem's @p base constraints with the ties
-     * of the closed nodes, closed. */
-    void
-    make_constraints(const AffineConstraints<double> &base,
-                     AffineConstraints<double>       &constraints) const;
 
     /** The bulk of @p problem (cells and loads, with its history strain)
      * into @p system with the problem's constraints and the closed nodes'
@@ -143,12 +138,11 @@ namespace lithostress
     accelerate(const bool restart);
 
   private:
-    /** @p constraints := @p base with the ties of the nodes @p is_open
-     * does not call open, closed. */
+    /** @p constraints := the problem's @p base constraints with the ties
+     * of the closed nodes, closed. */
     void
-    tie(const AffineConstraints<double>                  &base,
-        const typename FaultInterface<dim>::ContactState &is_open,
-        AffineConstraints<double>                        &constraints) const;
+    make_constraints(const AffineConstraints<double> &base,
+                     AffineConstraints<double>       &constraints) const;
 
     const FaultInterface<dim>     &faults;
     const DoFHandler<dim>         &dof_handler;
