@@ -635,6 +635,13 @@ namespace lithostress
         {
           if (contact)
             {
+              // The old preconditioner refers to the matrix about to be
+              // made again: freed first, which also lowers the peak memory.
+              if (!cholesky)
+                {
+                  factorization.reset();
+                  amg.clear();
+                }
               contact->assemble_bulk(problem, linearised);
               assembled_version = contact->open_set_version();
             }

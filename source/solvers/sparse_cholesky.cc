@@ -39,11 +39,24 @@ namespace lithostress
     const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
     AssertThrow(A.Comm().NumProc() == 1,
                 ExcMessage("SparseCholesky works on one rank"));
-    const SuiteSparse_long n   = A.NumMyRows();
-    const SuiteSparse_long nnz = A.NumMyNonzeros();
-    // A row of the symmetric matrix is a column of it: the rows, with
-    // global column indices, as compressed columns (stype > 0: CHOLMOD
-    // reads the entries on and above the diagonal).
+    const SuiteSparse_long n = A.NumMyRows();
+    // CHOLMOD reads the entries on and above the diagonal of a symmetric
+    // matrix (stype > 0). A row of the symmetric matrix is a column of it:
+    // the rows' entries left of and on the diagonal, with global column
+    // indices, are the upper triangle's compressed columns; the lower
+    // triangle is not copied.
+    SuiteSparse_long nnz = 0;
+    for (int row = 0; row < n; ++row)
+      {
+        int     length;
+        int    *columns;
+        double *values;
+        A.ExtractMyRowView(row, length, values, columns);
+        AssertThrow(A.GRID64(row) == row,
+                    ExcMessage("SparseCholesky expects rows 0, 1, ..."));
+        for (int j = 0; j < length; ++j)
+          nnz += (A.GCID64(columns[j]) <= row);
+      }
     cholmod_sparse *csc = cholmod_l_allocate_sparse(
       n, n, nnz, false, true, 1, CHOLMOD_REAL, &data->common);
     if (!csc)
@@ -60,14 +73,13 @@ namespace lithostress
         double *values;
         int    *columns;
         A.ExtractMyRowView(row, length, values, columns);
-        AssertThrow(A.GRID64(row) == row,
-                    ExcMessage("SparseCholesky expects rows 0, 1, ..."));
         SuiteSparse_long k = p[row];
         for (int j = 0; j < length; ++j)
-          {
-            i[k]   = A.GCID64(columns[j]);
-            x[k++] = values[j];
-          }
+          if (A.GCID64(columns[j]) <= row)
+            {
+              i[k]   = A.GCID64(columns[j]);
+              x[k++] = values[j];
+            }
         p[row + 1] = k;
       }
     // The ordering and symbolic factorisation once per sparsity.
