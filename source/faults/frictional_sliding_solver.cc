@@ -163,6 +163,65 @@ namespace lithostress
       return result;
     }
 
+  } // namespace
+
+  /**
+   * What the sliding steps keep from one solve to the next of the same
+   * bulk operator (the steps of the visco-elastic loop between changes of
+   * the mesh or the step size): exact contact's open set and ties, the
+   * linearised matrix (the bulk and the interface tangent it holds) and its
+   * preconditioner with the bookkeeping that decides when to make it again.
+   * A new solve then assembles only its right-hand side.
+   */
+  template <int dim>
+  struct KeptSlidingOperator
+  {
+    /** The operator (DiscreteProblem::operator_version) and DoF handler it
+     * was made for. */
+    unsigned long long     operator_version = 0;
+    const DoFHandler<dim> *dof_handler      = nullptr;
+    /** Exact normal contact, if a fault has it. */
+    std::unique_ptr<NormalContact<dim>> contact;
+    /** The linearised system: its matrix, right-hand side and (exact
+     * contact) constraints. */
+    LinearSystem<dim> linearised;
+    /** The interface tangent per point in the matrix: a set-up adds
+     * only the change, onto the bulk assembled (and its constraints
+     * made) once per set of active constraints. */
+    std::vector<Tensor<2, dim>>         assembled_tangents;
+    bool                                assembled         = false;
+    unsigned int                        assembled_version = 0;
+    std::unique_ptr<Epetra_MultiVector> modes;
+    TrilinosWrappers::PreconditionAMG   amg;
+    /** Whether the preconditioner is kept for the next solve. The
+     * tangent and the active constraints change only at the fault's
+     * points, a change of low rank for a Krylov method: a preconditioner
+     * is kept until the iterations it has cost beyond those of its first
+     * solve took longer than making it (preconditioner_cost). */
+    bool preconditioner_current = false;
+    /** The wall time of making the preconditioner, the time its
+     * iterations beyond those of its first solve have taken since, and
+     * the iterations of that first solve. */
+    double        preconditioner_cost = 0, stale_cost = 0;
+    unsigned int  first_iterations = numbers::invalid_unsigned_int;
+    SolverControl factorization_control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect> factorization;
+    std::unique_ptr<SparseCholesky>                 cholesky;
+    /** The last converged Newton solution, where the next solve starts
+     * (empty: none yet). */
+    TrilinosWrappers::MPI::Vector solution;
+
+    /** Whether it was made for @p problem's operator. */
+    bool
+    made_for(const DiscreteProblem<dim> &problem) const
+    {
+      return dof_handler == &problem.dof_handler &&
+             operator_version == problem.operator_version;
+    }
+  };
+
+  namespace
+  {
     /**
      * What the two methods of FrictionalSlidingSolver share (thesis §5.5,
      * FSHEAR, and the Newton method that replaces it): the problem with
@@ -189,7 +248,8 @@ namespace lithostress
                      const FaultInterface<dim>              &faults,
                      FaultSlipHistory                       &history,
                      SolverReport                           &report,
-                     const std::function<void(std::string)> &progress);
+                     const std::function<void(std::string)> &progress,
+                     KeptSlidingOperator<dim>               &kept);
 
       /** The elastic law with the slip @p slip per point (thesis §5.5: the
        * fault stays elastic, its slip moves the springs' rest length),
@@ -327,6 +387,7 @@ namespace lithostress
         return contact && contact->update(responses, normal_jumps);
       }
 
+      KeptSlidingOperator<dim>               &kept;
       const Settings                         &settings;
       const DiscreteProblem<dim>             &problem;
       const FaultInterface<dim>              &faults;
@@ -349,16 +410,18 @@ namespace lithostress
       /** The states at the last states_changed(). */
       std::vector<SlipState> newton_states;
       /** Exact normal contact, if a fault has it. */
-      std::unique_ptr<NormalContact<dim>> contact;
+      std::unique_ptr<NormalContact<dim>> &contact = kept.contact;
       /** The linearised system: its matrix, right-hand side and (exact
        * contact) constraints. */
-      LinearSystem<dim>              linearised;
-      TrilinosWrappers::MPI::Vector &rhs = linearised.rhs;
+      LinearSystem<dim>             &linearised = kept.linearised;
+      TrilinosWrappers::MPI::Vector &rhs        = linearised.rhs;
       TrilinosWrappers::MPI::Vector  u, u_ghost, residual, force;
       /** ‖f‖; the last residual norm; the last excess shear [Pa]. */
       double f = 0, r_norm = 0, excess = 0;
       /** The last iteration. */
       unsigned int iteration = 0;
+      /** Whether u started from the last solve's solution. */
+      bool warm_start = false;
       /** Whether the steps are preconditioned by a factorisation
        * (`Linear solver`); the residual a linear solve must reach beyond
        * the Linear solver tolerance (inexact Newton). */
@@ -381,31 +444,25 @@ namespace lithostress
 
       TrilinosWrappers::SparseMatrix &matrix = linearised.matrix;
       /** The bulk right-hand side (with the active constraints in exact
-       * contact), to which each set-up adds the interface's affine part. */
-      TrilinosWrappers::MPI::Vector       bulk_rhs;
-      std::unique_ptr<Epetra_MultiVector> modes;
-      TrilinosWrappers::PreconditionAMG   amg;
-      typename AMGSolver<dim>::Settings   ilu_settings, chebyshev_settings;
-      /** The interface tangent per point in the matrix: a set-up adds
-       * only the change, onto the bulk assembled (and its constraints
-       * made) once per set of active constraints. */
-      std::vector<Tensor<2, dim>> assembled_tangents;
-      bool                        assembled         = false;
-      unsigned int                assembled_version = 0;
-      /** Whether the preconditioner is kept for the next solve. The
-       * tangent and the active constraints change only at the fault's
-       * points, a change of low rank for a Krylov method: a preconditioner
-       * is kept until the iterations it has cost beyond those of its first
-       * solve took longer than making it (preconditioner_cost). */
-      bool preconditioner_current = false;
-      /** The wall time of making the preconditioner, the time its
-       * iterations beyond those of its first solve have taken since, and
-       * the iterations of that first solve. */
-      double        preconditioner_cost = 0, stale_cost = 0;
-      unsigned int  first_iterations = numbers::invalid_unsigned_int;
-      SolverControl factorization_control;
-      std::unique_ptr<TrilinosWrappers::SolverDirect> factorization;
-      std::unique_ptr<SparseCholesky>                 cholesky;
+       * contact), to which each set-up adds the interface's affine part;
+       * whether this solve assembled it. */
+      TrilinosWrappers::MPI::Vector     bulk_rhs;
+      bool                              bulk_rhs_assembled = false;
+      typename AMGSolver<dim>::Settings ilu_settings, chebyshev_settings;
+      // The kept operator's parts (KeptSlidingOperator).
+      std::unique_ptr<Epetra_MultiVector> &modes      = kept.modes;
+      TrilinosWrappers::PreconditionAMG   &amg        = kept.amg;
+      std::vector<Tensor<2, dim>> &assembled_tangents = kept.assembled_tangents;
+      bool                        &assembled          = kept.assembled;
+      unsigned int                &assembled_version  = kept.assembled_version;
+      bool          &preconditioner_current = kept.preconditioner_current;
+      double        &preconditioner_cost    = kept.preconditioner_cost;
+      double        &stale_cost             = kept.stale_cost;
+      unsigned int  &first_iterations       = kept.first_iterations;
+      SolverControl &factorization_control  = kept.factorization_control;
+      std::unique_ptr<TrilinosWrappers::SolverDirect> &factorization =
+        kept.factorization;
+      std::unique_ptr<SparseCholesky> &cholesky = kept.cholesky;
 
       /** The preconditioner of the linearised system: the factorisation
        * or the AMG, built afresh if it is not current. */
@@ -432,8 +489,10 @@ namespace lithostress
       const FaultInterface<dim>              &faults,
       FaultSlipHistory                       &history,
       SolverReport                           &report,
-      const std::function<void(std::string)> &progress)
-        : settings(settings)
+      const std::function<void(std::string)> &progress,
+      KeptSlidingOperator<dim>               &kept)
+        : kept(kept)
+        , settings(settings)
         , problem(problem)
         , faults(faults)
         , history(history)
@@ -469,7 +528,7 @@ namespace lithostress
       normal_jumps.resize(n_points);
       rhs                      = problem.system.rhs;
       linearised.locally_owned = system.locally_owned;
-      if (faults.contact())
+      if (faults.contact() && !contact)
         {
           contact =
             std::make_unique<NormalContact<dim>>(faults,
@@ -478,7 +537,15 @@ namespace lithostress
                                                  system.locally_owned,
                                                  system.locally_relevant);
         }
-      u = 0;
+      // Newton starts from the last solution on this operator (the last
+      // time step's), else from zero.
+      warm_start =
+        settings.method == FrictionalSlidingSolver<dim>::Method::newton &&
+        kept.solution.size() == u.size();
+      if (warm_start)
+        u = kept.solution;
+      else
+        u = 0;
       constraints.distribute(u);
       u_ghost = u;
       f       = std::max(system.rhs.l2_norm(), 1e-300);
@@ -650,7 +717,8 @@ namespace lithostress
               matrix.copy_from(system.matrix);
               rhs = system.rhs;
             }
-          bulk_rhs = rhs;
+          bulk_rhs           = rhs;
+          bulk_rhs_assembled = true;
           // The matrix was made again (with the sparsity of the new
           // constraints): the AMG and Amesos refer to the old one; a
           // Cholesky factor is the preconditioner's own.
@@ -660,6 +728,16 @@ namespace lithostress
                     assembled_tangents.end(),
                     Tensor<2, dim>());
           assembled = true;
+        }
+      else if (!bulk_rhs_assembled)
+        {
+          // A new solve on the kept operator: only its right-hand side.
+          if (contact)
+            contact->assemble_bulk_rhs(problem, linearised);
+          else
+            rhs = system.rhs;
+          bulk_rhs           = rhs;
+          bulk_rhs_assembled = true;
         }
       reset_rhs();
       // The matrix gets the change of the interface tangent, the
@@ -913,7 +991,9 @@ namespace lithostress
       for (c.iteration = 1; c.iteration <= settings.max_iterations;
            ++c.iteration)
         {
-          if (c.iteration == 1)
+          // The elastic predictor (every point stuck), unless the last
+          // solution's states are the guess.
+          if (c.iteration == 1 && !c.warm_start)
             c.set_up(c.stuck_law(c.history.slip));
           else
             c.set_up([&c](const PointValues &values,
@@ -933,7 +1013,8 @@ namespace lithostress
               trial = c.u;
               trial.add(alpha, step);
               trial_norm = c.residual_norm(trial);
-              if (!settings.line_search || c.iteration == 1 || set_changed ||
+              if (!settings.line_search ||
+                  (c.iteration == 1 && !c.warm_start) || set_changed ||
                   trial_norm <= (1 - 1e-4 * alpha) * c.r_norm || halving == 6)
                 break;
               alpha /= 2;
@@ -1080,17 +1161,32 @@ namespace lithostress
     FaultSlipHistory                       &history,
     TrilinosWrappers::MPI::Vector          &solution,
     SolverReport                           &report,
-    const std::function<void(std::string)> &progress) const
+    const std::function<void(std::string)> &progress)
   {
     const bool newton    = parameters.method == Method::newton;
     report               = SolverReport();
     report.solver        = newton ? "newton" : "thesis";
     report.linear_solves = 0;
-    Timer               timer(problem.dof_handler.get_communicator(), true);
+    Timer timer(problem.dof_handler.get_communicator(), true);
+    if (!kept || !kept->made_for(problem))
+      {
+        kept                   = std::make_unique<KeptSlidingOperator<dim>>();
+        kept->operator_version = problem.operator_version;
+        kept->dof_handler      = &problem.dof_handler;
+      }
     SlidingContext<dim> c(
-      parameters, problem, faults, history, report, progress);
-    const bool converged =
-      newton ? solve_by_newton(c) : solve_by_thesis_iteration(c);
+      parameters, problem, faults, history, report, progress, *kept);
+    bool converged = false;
+    try
+      {
+        converged = newton ? solve_by_newton(c) : solve_by_thesis_iteration(c);
+      }
+    catch (...)
+      {
+        // The kept operator may be half updated.
+        kept.reset();
+        throw;
+      }
     // The last iterate's slip and states: the trial history, committed by
     // the caller (or, if not converged, shown).
     for (unsigned int i = 0; i < c.n_points; ++i)
@@ -1109,6 +1205,8 @@ namespace lithostress
                              {"sliding: Krylov solves", c.time_solve},
                              {"sliding: residuals and reactions", c.time_residual}};
     solution              = c.u;
+    if (converged && newton)
+      kept->solution = c.u;
     if (!converged)
       {
         std::ostringstream what;
@@ -1124,6 +1222,12 @@ namespace lithostress
         throw ComputationError(what.str());
       }
   }
+
+  template <int dim>
+  FrictionalSlidingSolver<dim>::FrictionalSlidingSolver() = default;
+
+  template <int dim>
+  FrictionalSlidingSolver<dim>::~FrictionalSlidingSolver() = default;
 
   template class FrictionalSlidingSolver<2>;
 } // namespace lithostress

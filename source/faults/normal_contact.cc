@@ -94,6 +94,20 @@ namespace lithostress
 
   template <int dim>
   void
+  NormalContact<dim>::assemble_bulk_rhs(const DiscreteProblem<dim> &problem,
+                                        LinearSystem<dim> &system) const
+  {
+    Assert(constraints_made_for == version,
+           ExcMessage("assemble_bulk() first, for this open set"));
+    ElasticAssembler<dim> assembler(fe_space,
+                                    problem.stress_model,
+                                    problem.loads);
+    assembler.set_history_strain(problem.history_strain);
+    assembler.assemble(dof_handler, system, false);
+  }
+
+  template <int dim>
+  void
   NormalContact<dim>::compute_tractions(
     const TrilinosWrappers::MPI::Vector &residual)
   {

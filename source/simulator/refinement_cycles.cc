@@ -231,7 +231,7 @@ namespace lithostress
           cells,
           dofs_per_cell * cells,
           solver.name(),
-          solver.memory_per_dof(),
+          solver.memory_per_dof(dofs_per_cell * cells),
           level_bytes,
           "Mesh refinement/Number of cycles, Refine fraction "
           "or Maximum level" +

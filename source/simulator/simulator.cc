@@ -329,7 +329,8 @@ namespace lithostress
         cells,
         interior_dofs * cells + boundary_dofs * growth,
         problem->linear_solver().name(),
-        problem->linear_solver().memory_per_dof(),
+        problem->linear_solver().memory_per_dof(interior_dofs * cells +
+                                                boundary_dofs * growth),
         problem->linear_solver().memory_of_levels(
           coarse_cells, triangulation.n_global_levels() + refinements),
         "Mesh refinement/Initial global refinement" +

@@ -1,3 +1,4 @@
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -8,25 +9,28 @@
 namespace lithostress
 {
   template <int dim>
-  DirectSolver<dim>::DirectSolver(const std::string &amesos_solver)
-      : amesos_solver(amesos_solver)
+  DirectSolver<dim>::DirectSolver(const std::string &package)
+      : package(package)
   {
   }
 
   template <int dim>
-  SolverReport
-  DirectSolver<dim>::solve(const DiscreteProblem<dim>    &problem,
-                           TrilinosWrappers::MPI::Vector &solution)
+  double
+  DirectSolver<dim>::memory_per_dof(const double) const
   {
-    const DoFHandler<dim>   &dof_handler = problem.dof_handler;
-    const LinearSystem<dim> &system      = problem.system;
-    SolverReport             report;
-    report.solver = "direct";
-    Timer         timer(dof_handler.get_communicator(), true);
-    SolverControl control(1, 0);
-    TrilinosWrappers::SolverDirect::AdditionalData data(false, amesos_solver);
+    return 3000;
+  }
+
+  template <int dim>
+  void
+  DirectSolver<dim>::solve_with_amesos(
+    const LinearSystem<dim>       &system,
+    const std::string             &amesos_package,
+    TrilinosWrappers::MPI::Vector &solution) const
+  {
+    SolverControl                                  control(1, 0);
+    TrilinosWrappers::SolverDirect::AdditionalData data(false, amesos_package);
     TrilinosWrappers::SolverDirect                 solver(control, data);
-    solution.reinit(system.locally_owned, dof_handler.get_communicator());
     try
       {
         solver.solve(system.matrix, solution, system.rhs);
@@ -36,10 +40,100 @@ namespace lithostress
         throw ComputationError(std::string("the direct solver failed: ") +
                                exc.what());
       }
-    report.solve_time = timer.wall_time();
+  }
+
+  template <int dim>
+  SolverReport
+  DirectSolver<dim>::solve(const DiscreteProblem<dim>    &problem,
+                           TrilinosWrappers::MPI::Vector &solution)
+  {
+    const LinearSystem<dim> &system = problem.system;
+    const MPI_Comm communicator     = problem.dof_handler.get_communicator();
+    SolverReport   report;
+    report.solver     = "direct";
     report.iterations = 1;
+    Timer timer(communicator, true);
+    solution.reinit(system.locally_owned, communicator);
+
+    const bool cholesky = package == "Cholesky" &&
+                          Utilities::MPI::n_mpi_processes(communicator) == 1;
+    if (!cholesky)
+      solve_with_amesos(system,
+                        package == "Cholesky" ? "Amesos_Klu" : package,
+                        solution);
+    else
+      {
+        std::unique_ptr<SparseCholesky> factor;
+        if (kept_cholesky && kept_version == problem.operator_version)
+          factor = std::move(kept_cholesky);
+        kept_cholesky.reset();
+        try
+          {
+            if (!factor)
+              {
+                factor = std::make_unique<SparseCholesky>();
+                factor->factorize(system.matrix);
+              }
+            factor->vmult(solution, system.rhs);
+            report.solver       = "direct (Cholesky)";
+            report.memory_bytes = factor->memory_consumption();
+          }
+        catch (const ComputationError &)
+          {
+            // Not positive definite (a load with unsymmetric stiffness?):
+            // an LU factorisation instead.
+            factor.reset();
+            solve_with_amesos(system, "Amesos_Klu", solution);
+            report.solver = "direct (KLU: the Cholesky factorisation failed)";
+          }
+        if (problem.keep_setup && factor)
+          {
+            kept_cholesky = std::move(factor);
+            kept_version  = problem.operator_version;
+          }
+      }
+    report.solve_time = timer.wall_time();
     return report;
   }
 
+  template <int dim>
+  FactorisationOrAMGSolver<dim>::FactorisationOrAMGSolver(
+    std::unique_ptr<LinearSolver<dim>> direct,
+    std::unique_ptr<LinearSolver<dim>> amg,
+    const double                       direct_limit)
+      : direct(std::move(direct))
+      , amg(std::move(amg))
+      , direct_limit(direct_limit)
+  {
+  }
+
+  template <int dim>
+  bool
+  FactorisationOrAMGSolver<dim>::factorises(const double n_dofs) const
+  {
+    // The program runs on MPI_COMM_WORLD.
+    return Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 &&
+           n_dofs <= direct_limit;
+  }
+
+  template <int dim>
+  double
+  FactorisationOrAMGSolver<dim>::memory_per_dof(const double n_dofs) const
+  {
+    return factorises(n_dofs) ? direct->memory_per_dof(n_dofs)
+                              : amg->memory_per_dof(n_dofs);
+  }
+
+  template <int dim>
+  SolverReport
+  FactorisationOrAMGSolver<dim>::solve(const DiscreteProblem<dim>    &problem,
+                                       TrilinosWrappers::MPI::Vector &solution)
+  {
+    return factorises(problem.dof_handler.n_dofs())
+             ? direct->solve(problem, solution)
+             : amg->solve(problem, solution);
+  }
+
   template class DirectSolver<2>;
+  template class FactorisationOrAMGSolver<2>;
 } // namespace lithostress

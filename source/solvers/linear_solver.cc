@@ -79,8 +79,9 @@ namespace lithostress
       "V-cycle (no matrix is assembled; one displacement field of degree "
       "1-3); AMG: CG with algebraic multigrid on the assembled matrix (all "
       "rigid-body modes as near-null space); direct: a sparse direct "
-      "solver; automatic: the multigrid wherever it applies, AMG "
-      "otherwise.");
+      "solver (Direct solver); automatic: the multigrid wherever it "
+      "applies, otherwise the direct solver on one rank up to Direct "
+      "solver limit DoFs and AMG above it and on several ranks.");
     prm.declare_entry("Relative tolerance",
                       "1e-10",
                       Patterns::Double(1e-16, 1),
@@ -143,10 +144,22 @@ namespace lithostress
                       "the matrix-free operator) after the solve and report "
                       "it in statistics.json (bench).");
     prm.declare_entry("Direct solver",
-                      "Amesos_Klu",
-                      Patterns::Selection("Amesos_Klu|Amesos_Mumps|"
+                      "Cholesky",
+                      Patterns::Selection("Cholesky|Amesos_Klu|Amesos_Mumps|"
                                           "Amesos_Superludist"),
-                      "Trilinos Amesos package used by the direct solver.");
+                      "The direct solver's factorisation: Cholesky "
+                      "(SuiteSparse CHOLMOD, one rank, the factor kept "
+                      "across the time steps of one operator; Amesos KLU "
+                      "on several ranks or if the matrix is not positive "
+                      "definite), or a Trilinos Amesos package.");
+    prm.declare_entry("Direct solver limit",
+                      "2e6",
+                      Patterns::Double(0),
+                      "Type = automatic, where the matrix-free multigrid "
+                      "does not apply: the largest model [DoFs] solved by "
+                      "the direct solver on one rank (above it, and on "
+                      "several ranks, CG with AMG). The factorisation "
+                      "needs about 3 KB per DoF.");
     prm.leave_subsection();
   }
 
@@ -188,7 +201,8 @@ namespace lithostress
                           "model: " +
                             reason + "; use AMG or automatic");
       }
-    if (type == "automatic")
+    const bool automatic = type == "automatic";
+    if (automatic)
       type = multigrid_applies ? "matrix-free multigrid" : "AMG";
 
     std::unique_ptr<LinearSolver<dim>> solver;
@@ -221,6 +235,11 @@ namespace lithostress
         s.time_matrix_vector_product =
           prm.get_bool("Time matrix-vector product");
         solver = std::make_unique<AMGSolver<dim>>(s);
+        if (automatic)
+          solver = std::make_unique<FactorisationOrAMGSolver<dim>>(
+            std::make_unique<DirectSolver<dim>>(prm.get("Direct solver")),
+            std::move(solver),
+            prm.get_double("Direct solver limit"));
       }
     else
       solver = std::make_unique<DirectSolver<dim>>(prm.get("Direct solver"));

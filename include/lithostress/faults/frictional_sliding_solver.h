@@ -9,11 +9,15 @@
 #include <lithostress/solvers/linear_solver.h>
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace lithostress
 {
   using namespace dealii;
+
+  template <int dim>
+  struct KeptSlidingOperator;
 
   /**
    * Solves the elasticity problem of a model whose fault slides by Coulomb
@@ -92,6 +96,9 @@ namespace lithostress
       double         direct_limit   = 2e6;
     };
 
+    FrictionalSlidingSolver();
+    ~FrictionalSlidingSolver();
+
     /** Declare `Faults/Sliding solver`: the method, its tolerances and
      * the linear solver of each step (thesis §5.5). */
     static void
@@ -125,10 +132,15 @@ namespace lithostress
           FaultSlipHistory                       &history,
           TrilinosWrappers::MPI::Vector          &solution,
           SolverReport                           &report,
-          const std::function<void(std::string)> &progress) const;
+          const std::function<void(std::string)> &progress);
 
   private:
     Settings parameters;
+    /** The linearised operator, exact contact's ties and the
+     * preconditioner, kept from one solve to the next of the same bulk
+     * operator (DiscreteProblem::operator_version): the time loop's steps
+     * start from the last step's factor and open set. */
+    std::unique_ptr<KeptSlidingOperator<dim>> kept;
   };
 } // namespace lithostress
 

@@ -107,6 +107,13 @@ namespace lithostress
     assemble_bulk(const DiscreteProblem<dim> &problem,
                   LinearSystem<dim>          &system);
 
+    /** The right-hand side of @p problem alone into @p system, whose
+     * matrix and ties assemble_bulk() made for the present open nodes (a
+     * new time step on the same operator). */
+    void
+    assemble_bulk_rhs(const DiscreteProblem<dim> &problem,
+                      LinearSystem<dim>          &system) const;
+
 
     /** The normal tractions of the closed points from @p residual (ghosted:
      * K u − f plus the faults' forces other than the contact's, condensed

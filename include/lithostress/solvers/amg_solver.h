@@ -30,7 +30,7 @@ namespace lithostress
     /** Peak 887 MiB at 648 k and 3 010 MiB at 2.6 M DoFs, of which 160 MB is
      * the empty program. */
     double
-    memory_per_dof() const override
+    memory_per_dof(const double) const override
     {
       return 1200;
     }

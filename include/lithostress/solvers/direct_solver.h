@@ -2,14 +2,22 @@
 #define lithostress_solvers_direct_solver_h
 
 #include <lithostress/solvers/linear_solver.h>
+#include <lithostress/solvers/sparse_cholesky.h>
 
+#include <memory>
 #include <string>
 
 namespace lithostress
 {
   /**
-   * A sparse direct solver (Trilinos Amesos, KLU by default) for small or
-   * ill-conditioned problems.
+   * A sparse direct solver. `Cholesky` (the default of `Solver/Direct
+   * solver`) factorises the symmetric positive definite stiffness matrix
+   * on one rank (SparseCholesky) and keeps the factor for the next solve
+   * of the same operator (DiscreteProblem::keep_setup): the visco-elastic
+   * loop's steps and the goal-oriented dual problems then cost two
+   * triangular solves each. On several ranks, or for a matrix that is not
+   * positive definite, it takes Amesos KLU, and says so in the report. The
+   * Amesos packages (KLU, MUMPS, SuperLU_DIST) can be named directly.
    */
   template <int dim>
   class DirectSolver : public LinearSolver<dim>
@@ -21,22 +29,68 @@ namespace lithostress
       return "direct solver";
     }
 
-    /** Not measured: an allowance for the factor fill-in of a 2-D sparse direct
-     * solver (3-4x the matrix). */
+    /** Peak memory of a Cholesky solve beyond the empty program: 2 550
+     * B/DoF on the thrust fault locked at 416 k DoFs and 2 700 at 1.65 M
+     * (doc/performance.md); the factor's fill grows like log N. */
     double
-    memory_per_dof() const override
-    {
-      return 4000;
-    }
+    memory_per_dof(const double n_dofs) const override;
 
-    explicit DirectSolver(const std::string &amesos_solver);
+    /** @p package: `Cholesky` or an Amesos package (`Amesos_Klu`, ...). */
+    explicit DirectSolver(const std::string &package);
 
     SolverReport
     solve(const DiscreteProblem<dim>    &problem,
           TrilinosWrappers::MPI::Vector &solution) override;
 
   private:
-    std::string amesos_solver;
+    std::string package;
+    /** The Cholesky factor kept for the next solve and the operator
+     * version it was made for. */
+    std::unique_ptr<SparseCholesky> kept_cholesky;
+    unsigned long long              kept_version = 0;
+
+    /** Solve with an Amesos factorisation (@p package). */
+    void
+    solve_with_amesos(const LinearSystem<dim>       &system,
+                      const std::string             &package,
+                      TrilinosWrappers::MPI::Vector &solution) const;
+  };
+
+  /**
+   * `Solver/Type = automatic` where the matrix-free multigrid does not
+   * apply (faults, loads with other stiffness): the direct solver's
+   * Cholesky factor on one rank up to `Direct solver limit` DoFs, CG with
+   * AMG above it and on several ranks. Decided at each solve, since
+   * adaptive cycles change the DoFs.
+   */
+  template <int dim>
+  class FactorisationOrAMGSolver : public LinearSolver<dim>
+  {
+  public:
+    FactorisationOrAMGSolver(std::unique_ptr<LinearSolver<dim>> direct,
+                             std::unique_ptr<LinearSolver<dim>> amg,
+                             const double                       direct_limit);
+
+    std::string
+    name() const override
+    {
+      return "direct solver or CG with AMG";
+    }
+
+    double
+    memory_per_dof(const double n_dofs) const override;
+
+    SolverReport
+    solve(const DiscreteProblem<dim>    &problem,
+          TrilinosWrappers::MPI::Vector &solution) override;
+
+  private:
+    std::unique_ptr<LinearSolver<dim>> direct, amg;
+    double                             direct_limit;
+
+    /** Whether a model of @p n_dofs DoFs is factorised. */
+    bool
+    factorises(const double n_dofs) const;
   };
 } // namespace lithostress
 

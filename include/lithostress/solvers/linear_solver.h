@@ -174,12 +174,13 @@ namespace lithostress
     name() const = 0;
 
     /**
-     * Peak memory per DoF of a run with this solver [bytes], beyond the
-     * fixed footprint per rank: measured on the flexure benchmark
-     * (doc/performance.md), for the memory check before each mesh.
+     * Peak memory per DoF of a run with this solver on a mesh of
+     * @p n_dofs DoFs [bytes], beyond the fixed footprint per rank:
+     * measured (doc/performance.md), for the memory check before each
+     * mesh.
      */
     virtual double
-    memory_per_dof() const = 0;
+    memory_per_dof(const double n_dofs) const = 0;
 
     /**
      * Memory the solver needs for a mesh of @p n_levels levels on

@@ -36,7 +36,7 @@ namespace lithostress
 
     /** Peak 355 MiB at 648 k DoFs, of which 160 MB is the empty program. */
     double
-    memory_per_dof() const override
+    memory_per_dof(const double) const override
     {
       return 400;
     }
