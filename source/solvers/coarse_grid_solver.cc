@@ -7,8 +7,8 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/multigrid/mg_tools.h>
 
-#include <lithostress/base/input_error.h>
 #include <lithostress/assembly/elastic_assembler.h>
+#include <lithostress/base/input_error.h>
 #include <lithostress/loads/load.h>
 #include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/coarse_grid_solver.h>

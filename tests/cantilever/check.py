@@ -99,4 +99,22 @@ check(rows[0]["dofs"] == 54 and abs(coarse / tip - 1) <= 0.025,
       "thesis mesh (4 x 1 Q2 cells, 27 nodes, whole end fixed): tip %.5f vs the thesis's analytic "
       "P l^3/(3 E' I) = %.5f: %+.2f %% (allowed 2.5 %%; converged fully clamped %.5f, %+.1f %%)"
       % (coarse, tip, 100 * (coarse / tip - 1), converged, 100 * (converged / tip - 1)))
+
+# The thesis's constant-strain elements on the same 27 nodes (§4.3.2): its
+# CST mesh reaches 58 % and its CSQ mesh 83 % of beam theory. Computed by
+# thesis_mesh_elements.py (CSTs with the squares' diagonals one way, CSQs
+# as four CSTs about a centre node, the end load consistent with linear
+# edges): CST 52.5 % (plane strain) and 56.7 % (plane stress), CSQ 89.5 %
+# and 88.5 %. The thesis states neither its diagonals nor its plane state;
+# the tolerance is doc/thesis_comparison.md's 10 % of the thesis's value,
+# which both plane states meet, and which separates the two elements.
+sys.path.insert(0, os.path.join(SOURCE, "cantilever"))
+import thesis_mesh_elements  # noqa: E402
+for strain in (True, False):
+    r = thesis_mesh_elements.thesis_cantilever(strain)
+    for element, thesis in (("CST", 58.0), ("CSQ", 83.0)):
+        fraction = 100 * r[element] / r["beam"]
+        check(abs(fraction / thesis - 1) <= 0.1,
+              "%s, 27 nodes, plane %s: %.1f %% of beam theory, thesis %.0f %% (allowed 10 %%)"
+              % (element, "strain" if strain else "stress", fraction, thesis))
 finish()
