@@ -1019,10 +1019,11 @@ namespace lithostress
                 break;
               alpha /= 2;
             }
-          c.u         = trial;
-          c.r_norm    = trial_norm;
-          set_changed = c.update_active_set();
-          changed     = c.states_changed() || set_changed;
+          const double previous_norm = c.r_norm;
+          c.u                        = trial;
+          c.r_norm                   = trial_norm;
+          set_changed                = c.update_active_set();
+          changed                    = c.states_changed() || set_changed;
           if (!std::isfinite(c.r_norm))
             throw ComputationError(
               "the Newton iteration for the sliding on " +
@@ -1039,6 +1040,25 @@ namespace lithostress
           if (c.r_norm <= settings.residual_tolerance * c.f &&
               c.excess <= settings.excess_shear_tolerance && !set_changed)
             return true;
+          // The states stood still and the step was solved to the Linear
+          // solver tolerance, yet the step did not halve the residual: it
+          // is at the round-off of the linear solves (1.65 M DoFs on 2
+          // ranks with CG + AMG: 1.04e-9, 1.03e-9, 1.03e-9 of the load).
+          // Within 100 times the tolerance that is the solution.
+          if (!changed && c.forcing == 0 &&
+              c.excess <= settings.excess_shear_tolerance &&
+              c.r_norm > 0.5 * previous_norm &&
+              c.r_norm <= 100 * settings.residual_tolerance * c.f)
+            {
+              std::ostringstream note;
+              note << std::setprecision(3)
+                   << "  sliding: the residual stopped falling at "
+                   << c.r_norm / c.f
+                   << " of the load (the linear solves' round-off): "
+                      "converged";
+              c.progress(note.str());
+              return true;
+            }
           c.accelerate_tractions(changed);
         }
       return false;
