@@ -91,12 +91,14 @@ namespace lithostress
                       "spring): AMG = the elasticity AMG with the rigid "
                       "modes of each block (Chebyshev smoothing in exact "
                       "contact; ILU with the stiff spring); direct = a "
-                      "sparse factorisation of the tangent (Amesos KLU), "
-                      "kept while the active constraints do not change, so "
-                      "that the later steps, whose tangent differs only at "
-                      "the fault, take a few iterations; automatic = direct "
-                      "on one rank up to Direct solver limit DoFs, AMG "
-                      "otherwise.");
+                      "sparse factorisation of the tangent (its Cholesky "
+                      "factor in exact contact on one rank, else Amesos "
+                      "KLU), kept until the iterations it costs beyond its "
+                      "first solve's have taken longer than making it "
+                      "(the later steps' tangents differ only at the "
+                      "fault) and across the time steps of one step size; "
+                      "automatic = direct on one rank up to Direct solver "
+                      "limit DoFs, AMG otherwise.");
     prm.declare_entry("Direct solver limit",
                       "2e6",
                       Patterns::Double(0),
@@ -104,7 +106,7 @@ namespace lithostress
                       "DoFs for which one rank factorises the tangent "
                       "(measured faster than the AMG on the thesis's fault "
                       "models up to 1.65e6 DoFs, where the run's peak "
-                      "memory was 3.2 KB per DoF; doc/faults.md).");
+                      "memory was 2.6-3.1 KB per DoF; doc/performance.md).");
     prm.leave_subsection();
     prm.leave_subsection();
   }
