@@ -29,9 +29,12 @@ namespace lithostress
       return "direct solver";
     }
 
-    /** Peak memory of a Cholesky solve beyond the empty program: 2 550
-     * B/DoF on the thrust fault locked at 416 k DoFs and 2 700 at 1.65 M
-     * (doc/performance.md); the factor's fill grows like log N. */
+    /** Peak memory per DoF beyond the empty program (160 MB), measured
+     * (doc/performance.md, 2026-11-27): a Cholesky solve of the thrust
+     * fault locked, 1 850 B at 416 k DoFs and 1 990 B at 1.65 M (the
+     * factor's fill grows like log N); the frictional models, whose
+     * sliding solver keeps a second matrix and its own factor, 2.4-3.0 KB.
+     * 3 000 B covers both. */
     double
     memory_per_dof(const double n_dofs) const override;
 
