@@ -7,6 +7,26 @@
 
 namespace lithostress
 {
+  namespace
+  {
+    /** The bulk of @p problem (cells and loads, with its history strain)
+     * into @p system's right-hand side, and its matrix if @p with_matrix,
+     * with @p system's constraints. */
+    template <int dim>
+    void
+    assemble_cells(const DiscreteProblem<dim> &problem,
+                   const DoFHandler<dim>      &dof_handler,
+                   LinearSystem<dim>          &system,
+                   const bool                  with_matrix)
+    {
+      ElasticAssembler<dim> assembler(problem.fe_space,
+                                      problem.stress_model,
+                                      problem.loads);
+      assembler.set_history_strain(problem.history_strain);
+      assembler.assemble(dof_handler, system, with_matrix);
+    }
+  } // namespace
+
   template <int dim>
   NormalContact<dim>::NormalContact(const FaultInterface<dim>     &faults,
                                     const DoFHandler<dim>         &dof_handler,
@@ -84,11 +104,7 @@ namespace lithostress
                       faults.interface_cliques(dof_handler));
       }
     constraints_made_for = version;
-    ElasticAssembler<dim> assembler(fe_space,
-                                    problem.stress_model,
-                                    problem.loads);
-    assembler.set_history_strain(problem.history_strain);
-    assembler.assemble(dof_handler, system, true);
+    assemble_cells(problem, dof_handler, system, true);
   }
 
 
@@ -99,11 +115,7 @@ namespace lithostress
   {
     Assert(constraints_made_for == version,
            ExcMessage("assemble_bulk() first, for this open set"));
-    ElasticAssembler<dim> assembler(fe_space,
-                                    problem.stress_model,
-                                    problem.loads);
-    assembler.set_history_strain(problem.history_strain);
-    assembler.assemble(dof_handler, system, false);
+    assemble_cells(problem, dof_handler, system, false);
   }
 
   template <int dim>
