@@ -125,11 +125,12 @@ namespace lithostress
     // project the same jump the same way (their mapped normals differ by
     // O(h^2) there, which the stiff normal spring would turn into spurious
     // tractions).
-    point.normal   = trace.hanging_wall_normal(point.position);
-    point.shear[0] = point.normal[1];
-    point.shear[1] = -point.normal[0];
-    point.depth    = trace.depth(point.position);
-    point.distance = trace.distance_along(point.position);
+    point.normal           = trace.hanging_wall_normal(point.position);
+    point.shear[0]         = point.normal[1];
+    point.shear[1]         = -point.normal[0];
+    point.depth            = trace.depth(point.position);
+    point.overburden_depth = overburden_depth(fault, point.position);
+    point.distance         = trace.distance_along(point.position);
     return point;
   }
 
@@ -256,7 +257,9 @@ namespace lithostress
                                 q + 1 == m->n_quadrature_points,
                                 node,
                                 node_sign,
-                                node_position});
+                                node_position,
+                                minus,
+                                plus});
           }
       });
   }

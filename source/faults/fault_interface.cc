@@ -102,6 +102,16 @@ namespace lithostress
                           "rho_w [kg/m^3] of the hydrostatic pore pressure "
                           "rho_w g depth subtracted from the compression "
                           "(FSHEAR's 1000); 0 = dry.");
+        prm.declare_entry(
+          "Overburden depth from",
+          "fault top",
+          Patterns::Selection("fault top|sea level"),
+          "Where the depth of the lithostatic and pore pressures is "
+          "measured from: fault top = the fault's upper end (its trace on "
+          "the top surface); sea level = y = 0, as FSHEAR measures both "
+          "(thesis appendix: SLITH = 2911 g y and POREP = 1000 g y with y "
+          "the coordinate below sea level), which adds the water depth "
+          "above a submarine fault's trace to both.");
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -221,6 +231,8 @@ namespace lithostress
             f.lithostatic_density  = number("Lithostatic density", 0, true);
             f.pore_fluid_density   = number("Pore fluid density", 0, true);
             f.gravity              = gravity.acceleration;
+            fault.overburden_from_sea_level =
+              prm.get("Overburden depth from") == "sea level";
           }
         prm.leave_subsection();
         faults.push_back(fault);

@@ -9,6 +9,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
+#include <lithostress/faults/fault_element_stresses.h>
 #include <lithostress/faults/frictional_sliding_solver.h>
 #include <lithostress/faults/normal_contact.h>
 #include <lithostress/solvers/amg_solver.h>
@@ -59,6 +60,26 @@ namespace lithostress
                       Patterns::Double(0),
                       "Thesis method: the excess-shear forces are multiplied "
                       "by this (the thesis used 15 for k_s = 5e10 N/m).");
+    prm.declare_entry("Hold sliding points at the limit",
+                      "false",
+                      Patterns::Bool(),
+                      "Thesis method: true = as FSHEAR (its IIT flag), a "
+                      "point whose shear exceeded the friction limit at the "
+                      "first iteration has its shear moved to the limit at "
+                      "every later iteration, even where it has unloaded "
+                      "below it (it may slide back); false = such a point "
+                      "sticks again once its shear is below the limit.");
+    prm.declare_entry("Thesis stress reading",
+                      "interface points",
+                      Patterns::Selection("interface points|element centroids"),
+                      "Thesis method: where the excess shear is read. "
+                      "interface points = the fault's traction at each "
+                      "interface point; element centroids = as FSHEAR, one "
+                      "value per fault element (face pair): the stresses of "
+                      "the two cells beside it at their centroids, with the "
+                      "lithostatic stress at each centroid's depth, "
+                      "averaged, less the pore pressure at the face's "
+                      "midpoint, applied to all of the face's points.");
     prm.declare_entry("Line search",
                       "true",
                       Patterns::Bool(),
@@ -124,14 +145,17 @@ namespace lithostress
     parameters.excess_shear_tolerance =
       prm.get_double("Excess shear tolerance");
     parameters.convergence_factor = prm.get_double("Convergence factor");
-    parameters.line_search        = prm.get_bool("Line search");
-    parameters.linear_tolerance   = prm.get_double("Linear solver tolerance");
-    parameters.linear_reduction   = prm.get_double("Linear solver reduction");
-    const std::string solver      = prm.get("Linear solver");
-    parameters.preconditioner     = solver == "direct" ? Preconditioner::direct
-                                    : solver == "AMG"  ? Preconditioner::amg
-                                                      : Preconditioner::automatic;
-    parameters.direct_limit       = prm.get_double("Direct solver limit");
+    parameters.hold_at_limit = prm.get_bool("Hold sliding points at the limit");
+    parameters.element_stresses =
+      prm.get("Thesis stress reading") == "element centroids";
+    parameters.line_search      = prm.get_bool("Line search");
+    parameters.linear_tolerance = prm.get_double("Linear solver tolerance");
+    parameters.linear_reduction = prm.get_double("Linear solver reduction");
+    const std::string solver    = prm.get("Linear solver");
+    parameters.preconditioner   = solver == "direct" ? Preconditioner::direct
+                                  : solver == "AMG"  ? Preconditioner::amg
+                                                    : Preconditioner::automatic;
+    parameters.direct_limit     = prm.get_double("Direct solver limit");
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
                         "must be positive");
@@ -280,8 +304,11 @@ namespace lithostress
                                         contact->normal_traction(values.index),
                                         contact->closed(values.index),
                                         p_old,
-                                        p.depth);
-        return law.respond(w * p.shear, w * p.normal, p_old, p.depth);
+                                        p.overburden_depth);
+        return law.respond(w * p.shear,
+                           w * p.normal,
+                           p_old,
+                           p.overburden_depth);
       }
 
       /** Exact contact: the normal tractions at @p owned, from the residual
@@ -1069,14 +1096,16 @@ namespace lithostress
     /**
      * The largest excess shear over the friction limit at the elastic
      * traction of c.u (thesis §5.5, FSHEAR), moved into @p slip times the
-     * convergence factor; @p slid marks the points that ever slid.
+     * convergence factor; @p slid marks the points that ever slid, @p held
+     * those held at the limit (Hold sliding points at the limit).
      * c.responses get the states.
      */
     template <int dim>
     double
     thesis_excess_shear(SlidingContext<dim> &c,
                         std::vector<double> &slip,
-                        std::vector<bool>   &slid)
+                        std::vector<bool>   &slid,
+                        std::vector<bool>   &held)
     {
       using PointValues = typename SlidingContext<dim>::PointValues;
       if (c.contact)
@@ -1097,8 +1126,13 @@ namespace lithostress
           double       e   = 0;
           if (r.state == SlipState::open)
             e = tau;
-          else if (r.state == SlipState::sliding)
-            e = tau - (tau > 0 ? 1 : -1) * r.friction_limit;
+          else if (r.state == SlipState::sliding || held[i])
+            e = tau - (tau < 0 ? -1 : 1) * r.friction_limit;
+          // FSHEAR's IIT: over the limit at the first iteration, held at
+          // it from then on (Hold sliding points at the limit).
+          if (c.iteration == 1 && c.settings.hold_at_limit &&
+              r.state == SlipState::sliding)
+            held[i] = true;
           ex = std::max(ex, std::abs(e));
           if (e != 0)
             slid[i] = true;
@@ -1106,6 +1140,65 @@ namespace lithostress
           r.state = r.state == SlipState::open ? SlipState::open
                     : slid[i]                  ? SlipState::sliding
                                                : SlipState::stuck;
+        });
+      return Utilities::MPI::max(ex, c.communicator);
+    }
+
+    /**
+     * As thesis_excess_shear(), with FSHEAR's reading of the stresses
+     * (FaultElementStresses): one excess per face pair, from the shear and
+     * effective normal stress of its two cells' centroids, moved into the
+     * slip of all of its points.
+     */
+    template <int dim>
+    double
+    thesis_element_excess_shear(SlidingContext<dim>       &c,
+                                FaultElementStresses<dim> &elements,
+                                std::vector<double>       &slip,
+                                std::vector<bool>         &slid,
+                                std::vector<bool>         &held)
+    {
+      using PointValues = typename SlidingContext<dim>::PointValues;
+      if (c.contact)
+        c.contact_tractions(c.u);
+      else
+        c.u_ghost = c.u;
+      double                    ex = 0;
+      std::vector<unsigned int> face;
+      Point<dim>                first;
+      c.faults.for_each_interface_point(
+        c.dof_handler, c.fe_space, &c.u_ghost, [&](const PointValues &values) {
+          const unsigned int i = values.index;
+          if (face.empty())
+            first = values.point.position;
+          face.push_back(i);
+          c.responses[i] = c.respond(values, slip[i]);
+          if (!values.last_of_pair)
+            return;
+          const Point<dim> midpoint = 0.5 * (first + values.point.position);
+          const auto       r = elements.read(values, midpoint, c.u_ghost);
+          const CoulombFriction &law = c.faults.friction(values.point.fault);
+          const double           limit =
+            law.friction_coefficient * std::max(0., -r.effective_normal);
+          const bool   over = std::abs(r.shear) > limit;
+          const double e    = over || held[face[0]]
+                                ? r.shear - (r.shear < 0 ? -1 : 1) * limit
+                                : 0;
+          ex                = std::max(ex, std::abs(e));
+          for (const unsigned int j : face)
+            {
+              if (c.iteration == 1 && c.settings.hold_at_limit && over)
+                held[j] = true;
+              if (e != 0)
+                slid[j] = true;
+              slip[j] +=
+                c.settings.convergence_factor * e / law.shear_stiffness;
+              auto &state = c.responses[j].state;
+              state       = state == SlipState::open ? SlipState::open
+                            : slid[j]                ? SlipState::sliding
+                                                     : SlipState::stuck;
+            }
+          face.clear();
         });
       return Utilities::MPI::max(ex, c.communicator);
     }
@@ -1125,8 +1218,14 @@ namespace lithostress
     {
       const auto         &settings = c.settings;
       std::vector<double> slip     = c.history.slip;
-      std::vector<bool>   slid(c.n_points, false);
-      bool                converged = false;
+      std::vector<bool>   slid(c.n_points, false), held(c.n_points, false);
+      std::unique_ptr<FaultElementStresses<dim>> elements;
+      if (settings.element_stresses)
+        elements =
+          std::make_unique<FaultElementStresses<dim>>(c.fe_space,
+                                                      c.problem.stress_model,
+                                                      c.faults);
+      bool converged = false;
       c.set_up(c.stuck_law(slip));
       double first_excess = 0;
       for (c.iteration = 1; c.iteration <= settings.max_iterations;
@@ -1135,7 +1234,10 @@ namespace lithostress
           if (c.iteration > 1)
             c.assemble_rhs(c.stuck_law(slip));
           c.linear_solve(c.u);
-          c.excess = thesis_excess_shear(c, slip, slid);
+          c.excess =
+            elements
+              ? thesis_element_excess_shear(c, *elements, slip, slid, held)
+              : thesis_excess_shear(c, slip, slid, held);
           if (c.iteration == 1)
             first_excess = c.excess;
           // Growing by orders of magnitude, or overflowing: the factor is

@@ -52,7 +52,7 @@ namespace lithostress
             : law.normal_stiffness * w_n;
         if (frictional)
           {
-            sample.normal_traction -= law.overburden(p.depth);
+            sample.normal_traction -= law.overburden(p.overburden_depth);
             sample.state = i < history.trial_states.size()
                              ? history.trial_states[i]
                              : SlipState::stuck;
@@ -139,16 +139,33 @@ namespace lithostress
     // orders points the same way below sigma_m = T but is singular there,
     // which would pick the edge of the failed region instead of its most
     // failed point (doc/faults.md).
-    double distance = std::nan(""),
-           highest  = -std::numeric_limits<double>::max();
+    std::vector<std::pair<double, double>> x_sigma;
     for (const auto &sample : sample_stresses(
            dof_handler, fe_space, stress_model, griffith, solution, points))
-      if (sample.analysis.principal.sigma_1 > highest)
-        {
-          highest  = sample.analysis.principal.sigma_1;
-          distance = std::abs(sample.value.point[0] - trace.surface_x);
-        }
-    return distance;
+      x_sigma.emplace_back(sample.value.point[0],
+                           sample.analysis.principal.sigma_1);
+    if (x_sigma.empty())
+      return std::nan("");
+    std::sort(x_sigma.begin(), x_sigma.end());
+    const auto highest = std::max_element(x_sigma.begin(),
+                                          x_sigma.end(),
+                                          [](const auto &a, const auto &b) {
+                                            return a.second < b.second;
+                                          });
+    double     x       = highest->first;
+    // Between the surface's nodes: the vertex of the parabola through the
+    // largest sigma_1 and its two neighbours (the nodes are a cell's
+    // length apart, too coarse for the graben widths of thesis table 6.3).
+    if (highest != x_sigma.begin() && highest + 1 != x_sigma.end())
+      {
+        const auto  &a = *(highest - 1), &b = *highest, &c = *(highest + 1);
+        const double ab        = (b.second - a.second) / (b.first - a.first),
+                     bc        = (c.second - b.second) / (c.first - b.first),
+                     curvature = (bc - ab) / (c.first - a.first);
+        if (curvature < 0)
+          x = 0.5 * (a.first + b.first) - ab / (2 * curvature);
+      }
+    return std::abs(x - trace.surface_x);
   }
 
   void

@@ -259,6 +259,67 @@ check(all(f["state"] == "sliding" for f in fault) and worst_tau <= 1e3 and worst
       "tolerance and the contraction %.2f per solve)"
       % (summary["linear_solves"], worst_tau, worst_slip, bound, r))
 
+# FSHEAR's hold at the limit (Faults/Sliding solver/Hold sliding points at
+# the limit; thesis appendix, FSHEAR's IIT flag). The iteration moves
+# factor x e / k_s of slip per solve and removes the fraction f (1 - r) of
+# the excess of the uniform slip mode (0.89 at f = 3), but up to f of a
+# mode that alternates along the fault, whose bulk compliance is small
+# beside 1/k_s: such modes overshoot below the limit once f > 1.
+# Re-sticking freezes the overshoot, so the iteration stops with points
+# below mu|sigma_n| by far more than its tolerance; held at the limit, the
+# iteration is the plain over-relaxation, stable only for f < 2 (those
+# modes), which must converge to the exact state at f = 2 and stop with an
+# error naming the factor at f = 3.
+THESIS = ["Faults/Sliding solver/Method=thesis", "Faults/Sliding solver/Excess shear tolerance=1e3",
+          "Faults/Sliding solver/Maximum iterations=1000"]
+HOLD = "Faults/Sliding solver/Hold sliding points at the limit=true"
+out = os.path.abspath("output_frictional_fault_thesis_hold")
+run("faults/frictional_fault.prm", out, 1, THESIS + [HOLD, "Faults/Sliding solver/Convergence factor=2"])
+fault = read_fault(out)
+worst_tau = max(abs(-f["shear_traction"] - TAU_F) for f in fault)
+worst_slip = max(abs(-f["slip"] - slip) for f in fault)
+check(all(f["state"] == "sliding" for f in fault) and worst_tau <= 1e3 and worst_slip <= bound,
+      "thesis iteration, points held at the limit, factor 2: all points sliding, shear traction "
+      "within %.0f Pa of mu|sigma_n|, slip within %.1e m (bound %.1e m)" % (worst_tau, worst_slip, bound))
+out = os.path.abspath("output_frictional_fault_thesis_factor3")
+run("faults/frictional_fault.prm", out, 1, THESIS + ["Faults/Sliding solver/Convergence factor=3"])
+lowest = min(-f["shear_traction"] for f in read_fault(out))
+check(TAU_F - lowest > 1e6,
+      "thesis iteration re-sticking, factor 3: the overshoot of the fault's short modes is frozen, "
+      "the lowest shear traction %.4e Pa lies %.2f MPa below mu|sigma_n| (tolerance 1 kPa)"
+      % (lowest, (TAU_F - lowest) / 1e6))
+out = os.path.abspath("output_frictional_fault_thesis_hold_factor3")
+result = run("faults/frictional_fault.prm", out, 1,
+             THESIS + [HOLD, "Faults/Sliding solver/Convergence factor=3"], expect_success=False)
+check(result.returncode != 0 and "Convergence factor" in result.stderr + result.stdout,
+      "thesis iteration held at the limit, factor 3 > 2: stops (exit %d) with a message naming "
+      "Faults/Sliding solver/Convergence factor" % result.returncode)
+
+# The overburden's depth from sea level (Faults/<fault>/Overburden depth
+# from; FSHEAR measures SLITH and POREP from y = 0): the stuck block (mu
+# 10) with its top 5 km below y = 0 and the thesis's densities. The
+# displacements do not see the overburden while every point sticks; the
+# normal stress fault.csv reports must be compressed by exactly
+# (2911 - 1000) g 5 km more than with the depth from the fault's top.
+SUNK = ["Geometry/Layered box/Layer interfaces=-5, -15", "Faults/fault/Friction coefficient=10",
+        "Faults/fault/Lithostatic density=2911", "Faults/fault/Pore fluid density=1000",
+        "Convergence study/Points=4.99, -7; 5.01, -7; 1, -10; 9, -13"]
+sunk = {}
+for origin in ("fault top", "sea level"):
+    out = os.path.abspath("output_frictional_fault_" + origin.replace(" ", "_"))
+    run("faults/frictional_fault.prm", out, 1, SUNK + ["Faults/fault/Overburden depth from=" + origin])
+    sunk[origin] = (read_fault(out), read_csv(os.path.join(out, "point_values.csv")))
+shift = (2911 - 1000) * G * 5e3
+(top_fault, top_points), (sea_fault, sea_points) = sunk["fault top"], sunk["sea level"]
+worst_shift = max(abs((a["normal_traction"] - b["normal_traction"]) - shift) / shift
+                  for a, b in zip(top_fault, sea_fault))
+worst_u = max(abs(a[k] - b[k]) for a, b in zip(top_points, sea_points) for k in ("u_x", "u_y"))
+check(all(f["state"] == "stuck" for f in top_fault + sea_fault) and len(top_fault) == len(sea_fault)
+      and worst_shift < 1e-9 and worst_u < 1e-9,
+      "overburden depth from sea level, fault top 5 km below y = 0: every point stuck, the same "
+      "displacements (largest difference %.1e m), the effective normal stress %.4e Pa more "
+      "compressive at every point (1911 g 5 km, relative difference %.1e)" % (worst_u, shift, worst_shift))
+
 DIP = math.radians(63.43)
 d = (math.cos(DIP), -math.sin(DIP))
 n = (math.sin(DIP), math.cos(DIP))

@@ -95,6 +95,10 @@ namespace lithostress
       /** Depth below the top surface and distance along the fault from
        * its surface trace [m]. */
       double depth = 0, distance = 0;
+      /** The depth d of the friction law's overburden (ρ_l − ρ_w) g d
+       * [m]: `depth`, or below y = 0 (`Overburden depth from = sea
+       * level`). */
+      double overburden_depth = 0;
     };
 
     /**
@@ -135,6 +139,10 @@ namespace lithostress
       /** Where that node is (its side's mapped point; on a curved hanging
        * face the coarser side's mapping puts `point` O(h³) away). */
       const Point<dim> &node_position;
+      /** The face pair's field-0 and field-1 cells (for a law that reads
+       * the bulk beside the fault, as FSHEAR's element stresses). */
+      const typename DoFHandler<dim>::active_cell_iterator &minus_cell,
+        &plus_cell;
     };
 
     /** A visitor of the interface points (for_each_interface_point()). */
@@ -267,6 +275,17 @@ namespace lithostress
       return frictional() || contact();
     }
 
+    /** The depth d of fault @p k's overburden (ρ_l − ρ_w) g d at
+     * @p position [m]: below the fault's upper end, or below y = 0 with
+     * `Overburden depth from = sea level`. */
+    double
+    overburden_depth(const unsigned int k, const Point<dim> &position) const
+    {
+      return faults[k].overburden_from_sea_level
+               ? -position[1]
+               : faults[k].trace.depth(position);
+    }
+
     /** Whether fault @p k has exact normal contact (no normal spring). */
     bool
     exact_contact(const unsigned int k) const
@@ -378,6 +397,9 @@ namespace lithostress
       /** k_s, k_n per unit fault area [Pa/m] (elastic and frictional
        * laws), μ and the effective normal stress's terms (frictional). */
       CoulombFriction friction;
+      /** Whether the overburden's depth is measured from y = 0 (sea level)
+       * rather than from the fault's upper end (frictional). */
+      bool overburden_from_sea_level = false;
       /** Prescribed slip: slip and opening [m] as functions of the
        * distance s along the fault [m] and the time t [s]. */
       std::shared_ptr<FunctionParser<1>> slip, opening;

@@ -82,8 +82,16 @@ namespace lithostress
       double       residual_tolerance     = 1e-9;
       double       excess_shear_tolerance = 1e3;
       double       convergence_factor     = 1;
-      bool         line_search            = true;
-      double       linear_tolerance       = 1e-11;
+      /** Thesis method: a point over the friction limit at the first
+       * iteration is held at the limit thereafter, even where it unloads
+       * (FSHEAR's IIT flag); false: it re-sticks. */
+      bool hold_at_limit = false;
+      /** Thesis method: the excess shear from FSHEAR's reading of the
+       * stresses, one value per fault element (FaultElementStresses),
+       * instead of the traction at each interface point. */
+      bool   element_stresses = false;
+      bool   line_search      = true;
+      double linear_tolerance = 1e-11;
       /** Newton, while the points' states change: each step's linear
        * solve stops at this times the current nonlinear residual (inexact
        * Newton), if that is above linear_tolerance times its right-hand
