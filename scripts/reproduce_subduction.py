@@ -34,7 +34,9 @@ is measured is in the `quantity` text and in doc/subduction.md.
 
 Usage: reproduce_subduction.py OUTDIR [--binary PATH] [--global-refinement N]
                                [--only NAME,...] [--elastic-only] [--ranks N]
-                               [--width 920] [--measure-only]
+                               [--width 920] [--measure-only] [--set ENTRY=VALUE]
+(--set entries under Faults/ go only to the runs with a frictional plate
+boundary, the coupling series.)
 """
 import argparse
 import csv
@@ -265,6 +267,14 @@ def measure(table, name, directory, stage, thesis):
         add("right_mantle", "mean horizontal stress in the continental "
             "mantle at the right edge (35-95 km)",
             band_mean(right, "sigma_xx", 35, 95) * MPA, "MPa")
+        # The thesis's §7.5 numbers are deviatoric stresses (its figures
+        # 7.66, 7.67): the layer means of deviatoric sigma_xx as well.
+        add("right_crust_dev", "mean horizontal deviatoric stress in the "
+            "continental crust at the right edge (0-35 km)",
+            band_mean(right, "deviatoric_xx", 0, 35) * MPA, "MPa")
+        add("right_mantle_dev", "mean horizontal deviatoric stress in the "
+            "continental mantle at the right edge (35-95 km)",
+            band_mean(right, "deviatoric_xx", 35, 95) * MPA, "MPa")
     if name == "slab_pull_90":
         n = nodes_at(directory)
         lid = (n["material_id"] <= 1) & (n["x"] < TRENCH_KM * 1e3)
@@ -300,6 +310,20 @@ def measure(table, name, directory, stage, thesis):
         add("fault_base_compression", "largest horizontal compression "
             "beneath it (0-35 km)",
             -peak(column, "sigma_xx", -1, 0, 35)[0] * MPA, "MPa")
+        add("fault_base_compression_all", "largest horizontal compression "
+            "beneath it over the whole column (0-95 km)",
+            -peak(column, "sigma_xx", -1, 0, 95)[0] * MPA, "MPa")
+        # The overlying plate left of the load (thesis §7.6.1 and its
+        # thermal section: "the overlying plate" seaward of the basal
+        # shear): the wedge above the plate boundary at x = 580 km (the
+        # boundary's circle, centre (445.456, -305) km, radius 300 km, is
+        # 36.8 km below sea level there).
+        wedge = profile(directory, 580)
+        boundary_y = -(305.0 - math.sqrt(300.0 ** 2 - (580.0 - 445.456) ** 2))
+        boundary_depth = wedge["y"][0] / 1e3 - boundary_y
+        add("left_of_load", "mean horizontal stress in the overlying plate "
+            "left of the load (x = 580 km, above the plate boundary)",
+            band_mean(wedge, "sigma_xx", 0, boundary_depth) * MPA, "MPa")
         add("right_surface", "horizontal stress at the surface at the right "
             "edge", right["sigma_xx"][0] * MPA, "MPa")
         # Above 85 km: the base's corner at the right edge, where the shear
@@ -348,7 +372,8 @@ THESIS = {
                                  "fault_base_surface": 4,
                                  "fault_base_compression": 10,
                                  "right_surface": 0, "right_tension": 14,
-                                 "failed_area": 0},
+                                 "left_of_load": -4, "failed_area": 0},
+    ("basal_shear", "5Myr"): {"failed_area": 0},
     ("thermal", "elastic"): {"top_tension": 62, "base_compression": 130,
                              "failure_depth": 1, "failed_area": 0,
                              "left_regional": -60},
@@ -398,6 +423,30 @@ def comparisons(table, rows):
             if None not in (lo, we):
                 table.add("coupling (%s)" % stage, text, we - lo,
                           thesis if stage == "elastic" else None, "MPa")
+        # What the down-dip slab pull's horizontal component adds to the
+        # overlying plate (thesis §7.5.2: "< 5 MPa" of compression at
+        # k_s 1e9): deviatoric layer means against the 90 degree run, which
+        # has none.
+        vertical = "slab_pull_90 (%s)" % stage
+        for layer, depths, thesis in (("crust", "0-35 km", 17.5), ("mantle", "35-95 km", 40)):
+            key = "mean horizontal deviatoric stress in the continental " + layer
+            lo, we = value(locked, key), value(weak, key)
+            if None not in (lo, we):
+                table.add("coupling (%s)" % stage, "fall of the overlying plate's "
+                          "regional deviatoric compression in the %s (right edge, %s), "
+                          "locked -> k_s 1e9" % (layer, depths), we - lo,
+                          thesis if stage == "elastic" else None, "MPa")
+        for run_name, label in ((locked, "locked"), (weak, "k_s 1e9")):
+            for layer, depths in (("crust", "0-35 km"), ("mantle", "35-95 km")):
+                key = "mean horizontal deviatoric stress in the continental " + layer
+                a, b = value(run_name, key), value(vertical, key)
+                if None not in (a, b):
+                    table.add("coupling (%s)" % stage,
+                              "compression the 45 degree slab pull adds to the "
+                              "overlying plate's %s (deviatoric, right edge, %s), "
+                              "%s, against the 90 degree run" % (layer, depths, label),
+                              b - a, "< 5" if (stage == "elastic" and label != "locked"
+                                               and layer == "crust") else None, "MPa")
         we = value(weak, "mean horizontal stress in the continental crust")
         if we is not None:
             table.add("coupling (%s)" % stage, "regional compression left in "
@@ -510,6 +559,9 @@ def main():
     parser.add_argument("--measure-only", action="store_true",
                         help="measure the runs already in OUTDIR again, "
                              "without running them")
+    parser.add_argument("--set", action="append", default=[],
+                        help="an extra --set for every run (repeatable), e.g. "
+                             "\"Faults/plate_boundary/Overburden depth from=sea level\"")
     parser.add_argument("--width", type=float, default=WIDTH_KM,
                         help="x of the right edge [km] (the thesis does not state it)")
     args = parser.parse_args()
@@ -522,7 +574,8 @@ def main():
     table = Table()
     timing = []
     for name, prm, sets in configs:
-        sets = list(sets)
+        sets = list(sets) + [x for x in args.set
+                             if not x.startswith("Faults/") or name.startswith("coupling")]
         if args.global_refinement is not None:
             sets.append("Mesh refinement/Initial global refinement=%d" %
                         args.global_refinement)

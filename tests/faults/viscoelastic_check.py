@@ -13,6 +13,7 @@ cut by a normal fault, under constant tension for 10 Maxwell times.
 """
 import csv
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -45,6 +46,15 @@ check(all(b > a for a, b in zip(throws, throws[1:])),
 partial = os.path.abspath("output_viscoelastic_fault_restart")
 run(PRM, partial, 1, ["Time stepping/End time=5000", "Time stepping/Output times=0, 1000, 2000, 5000"])
 run(PRM, partial, 2, ["Time stepping/Resume=true"], keep_output=True)
+# That the second run resumed, from the first run's last checkpoint at
+# 5 kyr, rather than running from t = 0 again.
+with open(os.path.join(partial, "log.txt")) as f:
+    resumed = re.search(r"Resumed from (\S+): step (\d+), t = [^(]*\(([0-9.e+-]+) s\)", f.read())
+YEAR = 3.15576e7
+check(resumed is not None and resumed.group(1).startswith(partial)
+      and abs(float(resumed.group(3)) - 5000 * YEAR) <= 1e-6 * 5000 * YEAR,
+      "visco-elastic fault: the second run resumed from %s at step %s, t = %s s (5 kyr)"
+      % ((resumed.group(1), resumed.group(2), resumed.group(3)) if resumed else ("nothing", "-", "-")))
 a = fault_rows(os.path.join(reference, "fault.csv"))
 b = fault_rows(os.path.join(partial, "fault.csv"))
 scale = max(abs(float(r["slip"])) for r in a)

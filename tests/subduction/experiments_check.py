@@ -41,6 +41,14 @@ Thermal anomaly (§7.6.2):
   130 MPa).
 * The stress is linear in alpha: the linear reading of alpha gives exactly
   3 times the volumetric reading's stresses (1e-8).
+The numbers themselves (REFERENCE): each reproduced number within 2.5 %
+(or 1 % of its series' largest stress, for the small ones) of its value
+converged by goal-oriented refinement (reproduce_subduction.py, the table
+in doc/subduction.md: the cycles stop at < 1 % change while the DoFs
+double; this coarse mesh was measured within 1.1 % of them), and the
+thesis's number asserted within 10 % where the comparison table has no
+documented cause for a larger difference (doc/thesis_comparison.md); the
+others are printed with the thesis's number.
 Goal-oriented refinement with the frictional plate boundary (k_s 1e9):
 * The .prm file's cycles stop once the goals changed by < 1 % while the
   DoFs doubled; the goals then agree with the once-refined uniform mesh's
@@ -49,6 +57,26 @@ Goal-oriented refinement with the frictional plate boundary (k_s 1e9):
 import math
 import os
 import sys
+
+# Converged values [MPa, km] (doc/subduction.md; reproduce_subduction.py,
+# elastic runs, goal-oriented cycles to < 1 % change).
+REFERENCE = {
+    "right-edge tension, 90 degrees": 26.59,
+    "up-flexure crest, 90 degrees": 74.79,
+    "lid at the left edge": {90: -8.326, 63.43: 14.67, 45: 37.67, 26.57: 83.67},
+    "upper crust at the right edge": {90: -12.97, 63.43: -30.35, 45: -47.73, 26.57: -82.5},
+    "coupling: fall in the crust": 18.58,
+    "coupling: fall in the mantle": 58.95,
+    "coupling: lid more tensional": 81.06 - 37.67,
+    "thermal: tension at the top": 87.37,
+    "thermal: compression beneath": 136.0,
+}
+
+
+def near(value, reference, scale=None):
+    """Within 2.5 % of the converged reference, or within 1 % of @p scale
+    (a series' largest stress) for values small beside it."""
+    return abs(value - reference) <= max(0.025 * abs(reference), 0.01 * (scale or 0.0))
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from lithotest import SOURCE, check, finish, read_csv, run  # noqa: E402
@@ -98,25 +126,36 @@ for dip, out in pull.items():
     fx = -slab["F_y"] / math.tan(math.radians(dip)) if dip < 90 else 0.0
     check(abs(slab["F_y"] + others) < 1e-9 * others and abs(base["F_y"]) < 1e-6 * others
           and abs(slab["F_x"] - fx) < 1e-9 * others,
-          "dip %g: the slab pull (%.4e, %.4e) N/m balances the other loads' %.4e N/m upthrust; "
+          "dip %g: the slab pull (%.4e, %.4e) N/m balances the other loads' %.4e N/m upthrust "
+          "(by construction: the pull is sized from them; this checks their assembly on the mesh); "
           "the fluid base carries %.1e N/m" % (dip, slab["F_x"], slab["F_y"], others, base["F_y"]))
 
 right = profile(pull[90], 919)
 crust = [r for r in right if r["depth"] <= 35e3]
 top = max(crust, key=lambda r: r["deviatoric_xx"])
-check(top["deviatoric_xx"] > 10e6 and 2e3 <= top["depth"] <= 12e3,
+check(near(top["deviatoric_xx"] * MPA, REFERENCE["right-edge tension, 90 degrees"])
+      and 2e3 <= top["depth"] <= 12e3,
       "90 degrees: horizontal deviatoric tension in the continental crust at the right edge, "
-      "largest %.1f MPa at %.1f km (thesis 31.5 MPa at 5-10 km)"
-      % (top["deviatoric_xx"] * MPA, top["depth"] / 1e3))
+      "largest %.2f MPa (converged %.2f) at %.1f km (thesis 31.5 MPa at 5-10 km: 16 %% apart, "
+      "unexplained in doc/thesis_comparison.md)"
+      % (top["deviatoric_xx"] * MPA, REFERENCE["right-edge tension, 90 degrees"], top["depth"] / 1e3))
 surface = [(r["x"], r["u_y"]) for r in read_csv(os.path.join(pull[90], "surface_profile.csv"))]
 crest = max(surface, key=lambda s: s[1])
-check(50e3 <= 500e3 - crest[0] <= 100e3,
-      "90 degrees: the ocean floor's up-flexure crest %.1f km seaward of the trench "
-      "(thesis ~75 km)" % ((500e3 - crest[0]) / 1e3))
+distance = (500e3 - crest[0]) / 1e3
+check(near(distance, REFERENCE["up-flexure crest, 90 degrees"]) and abs(distance - 75) <= 7.5,
+      "90 degrees: the ocean floor's up-flexure crest %.2f km seaward of the trench (converged "
+      "%.2f; thesis ~75 km, within 10 %%)" % (distance, REFERENCE["up-flexure crest, 90 degrees"]))
 
 lid = {d: band_mean(profile(out, 1), "sigma_xx", 0, 30) for d, out in pull.items()}
 upper = {d: band_mean(profile(out, 919), "sigma_xx", 0, 10) for d, out in pull.items()}
 dips = sorted(pull, reverse=True)
+lid_ref, upper_ref = REFERENCE["lid at the left edge"], REFERENCE["upper crust at the right edge"]
+check(all(near(lid[d] * MPA, lid_ref[round(d, 2)], 83.67) for d in dips)
+      and all(near(upper[d] * MPA, upper_ref[round(d, 2)], 82.5) for d in dips),
+      "the dip series' regional stresses hold their converged values: lid %s MPa, upper crust %s "
+      "MPa (dips %s)" % (", ".join("%.2f" % lid_ref[round(d, 2)] for d in dips),
+                         ", ".join("%.2f" % upper_ref[round(d, 2)] for d in dips),
+                         ", ".join("%.4g" % d for d in dips)))
 check(all(lid[a] < lid[b] for a, b in zip(dips, dips[1:]))
       and all(upper[a] > upper[b] for a, b in zip(dips, dips[1:]))
       and lid[dips[-1]] - lid[dips[1]] > 20e6 and upper[dips[1]] - upper[dips[-1]] > 20e6,
@@ -136,10 +175,16 @@ fall_mantle = (band_mean(profile(weak[1], 919), "sigma_xx", 35, 95)
                - band_mean(profile(locked, 919), "sigma_xx", 35, 95))
 lid_change = (band_mean(profile(weak[1], 1), "sigma_xx", 0, 30)
               - band_mean(profile(locked, 1), "sigma_xx", 0, 30))
-check(fall_crust > 5e6 and fall_mantle > 5e6 and lid_change > 5e6,
-      "coupling locked -> k_s 1e9 N/m: the overlying plate's regional compression falls by "
-      "%.1f MPa in the crust and %.1f MPa in the mantle (thesis 17.5, 40), the subducting lid "
-      "becomes %.1f MPa more tensional" % (fall_crust * MPA, fall_mantle * MPA, lid_change * MPA))
+check(near(fall_crust * MPA, REFERENCE["coupling: fall in the crust"])
+      and near(fall_mantle * MPA, REFERENCE["coupling: fall in the mantle"])
+      and near(lid_change * MPA, REFERENCE["coupling: lid more tensional"]),
+      "coupling locked -> k_s 1e9 N/m: the overlying plate's regional compression (mean total "
+      "sigma_xx) falls by %.2f MPa in the crust and %.2f MPa in the mantle (converged %.2f, %.2f), "
+      "the subducting lid becomes %.2f MPa more tensional (converged %.2f); the thesis's deviatoric "
+      "17.5 and 40 MPa are compared in doc/thesis_comparison.md"
+      % (fall_crust * MPA, fall_mantle * MPA, REFERENCE["coupling: fall in the crust"],
+         REFERENCE["coupling: fall in the mantle"], lid_change * MPA,
+         REFERENCE["coupling: lid more tensional"]))
 fault = read_csv(os.path.join(weak[1], "fault.csv"))
 slip = [p["slip"] for p in fault]
 check(max(slip) < 0,
@@ -189,10 +234,13 @@ hot_v = experiment("subduction_thermal.prm", "thermal_volumetric",
                    ["Loads/Thermal strain/Coefficient type=volumetric"])
 above = profile(hot, 780)
 deepest = min(above, key=lambda r: r["sigma_xx"])
-check(above[0]["sigma_xx"] > 20e6 and deepest["sigma_xx"] < -50e6 and deepest["depth"] > 20e3,
-      "thermal: above the anomaly's centre %.1f MPa tension at the top, %.1f MPa compression "
-      "at %.1f km (thesis 62 and 130 MPa)"
-      % (above[0]["sigma_xx"] * MPA, -deepest["sigma_xx"] * MPA, deepest["depth"] / 1e3))
+check(near(above[0]["sigma_xx"] * MPA, REFERENCE["thermal: tension at the top"])
+      and near(-deepest["sigma_xx"] * MPA, REFERENCE["thermal: compression beneath"])
+      and abs(-deepest["sigma_xx"] * MPA - 130) <= 13 and deepest["depth"] > 20e3,
+      "thermal: above the anomaly's centre %.2f MPa tension at the top (converged %.2f; thesis "
+      "62, unexplained), %.2f MPa compression at %.1f km (converged %.2f; thesis 130, within 10 %%)"
+      % (above[0]["sigma_xx"] * MPA, REFERENCE["thermal: tension at the top"],
+         -deepest["sigma_xx"] * MPA, deepest["depth"] / 1e3, REFERENCE["thermal: compression beneath"]))
 ratio_error = max(abs(a["sigma_xx"] - 3 * b["sigma_xx"]) for a, b in zip(above, profile(hot_v, 780)))
 check(ratio_error <= 1e-8 * abs(deepest["sigma_xx"]),
       "thermal: the linear reading of alpha gives 3 x the volumetric reading's stress "
