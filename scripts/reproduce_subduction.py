@@ -344,6 +344,15 @@ def measure(table, name, directory, stage, thesis):
         add("left_regional", "mean horizontal stress in the subducting plate "
             "at the left edge (whole thickness)",
             band_mean(left, "sigma_xx", 0, 90) * MPA, "MPa")
+    if name.startswith("thermal"):
+        # The flexure's axis (thesis §7.6.2: "a flexure of the overlying
+        # plate with an axis at the centre of the temperature anomaly"):
+        # where the bending's tension at the land surface (y = 0) peaks.
+        n = nodes_at(directory)
+        land = (np.abs(n["y"]) < 1.0) & (n["x"] > 600e3)
+        axis = n["x"][land][np.argmax(n["stress"][:, 0][land])]
+        add("flexure_axis", "x of the largest horizontal tension at the land "
+            "surface (the flexure's axis)", float(axis / 1e3), "km")
     if name in ("basal_shear",) or name.startswith("thermal"):
         n = nodes_at(directory)
         failed = n["griffith_degree_of_failure"] <= 0
@@ -374,7 +383,7 @@ THESIS = {
                                  "right_surface": 0, "right_tension": 14,
                                  "left_of_load": -4, "failed_area": 0},
     ("basal_shear", "5Myr"): {"failed_area": 0},
-    ("thermal", "elastic"): {"top_tension": 62, "base_compression": 130,
+    ("thermal", "elastic"): {"flexure_axis": 780, "top_tension": 62, "base_compression": 130,
                              "failure_depth": 1, "failed_area": 0,
                              "left_regional": -60},
     ("thermal_volumetric", "elastic"): {"top_tension": 62,
@@ -447,6 +456,18 @@ def comparisons(table, rows):
                               "%s, against the 90 degree run" % (layer, depths, label),
                               b - a, "< 5" if (stage == "elastic" and label != "locked"
                                                and layer == "crust") else None, "MPa")
+        key = "mean horizontal stress in the subducting plate's elastic lid"
+        lo, we = value(locked, key), value(weak, key)
+        if None not in (lo, we):
+            table.add("coupling (%s)" % stage, "rise of the subducting lid's regional "
+                      "tension (left edge, 0-30 km below the sea floor), locked -> k_s 1e9",
+                      we - lo, 40 if stage == "elastic" else None, "MPa")
+        key = "largest horizontal deviatoric tension in the continental crust"
+        pull, density = value("slab_pull_90 (%s)" % stage, key), value("density (%s)" % stage, key)
+        if None not in (pull, density):
+            table.add("slab_pull 90 - density (%s)" % stage, "right-edge tension the vertical "
+                      "slab pull adds to the lateral density model's", pull - density,
+                      10 if stage == "elastic" else None, "MPa")
         we = value(weak, "mean horizontal stress in the continental crust")
         if we is not None:
             table.add("coupling (%s)" % stage, "regional compression left in "

@@ -483,6 +483,12 @@ SUBDUCTION = {
         ("basal_shear (elastic)", "output nodes failed by the Griffith criterion", 1),
     ("basal_shear_3p5MPa", "failed_elements_after_5Myr"):
         ("basal_shear (5Myr)", "output nodes failed by the Griffith criterion", 1),
+    ("thermal_anomaly", "flexure_axis_x_at_anomaly_centre"):
+        ("thermal (elastic)", "x of the largest horizontal tension at the land surface", 1),
+    ("plate_coupling_locked_vs_ks_1e9", "increase_regional_horizontal_tension_subducting_plate_commensurate"):
+        ("coupling (elastic)", "rise of the subducting lid's regional tension", 1),
+    ("subduction_slab_pull_dip_90", "right_edge_tension_excess_over_lateral_density_model"):
+        ("slab_pull 90 - density (elastic)", "right-edge tension the vertical slab pull adds", 1),
     ("thermal_anomaly", "horizontal_tension_top_of_crust_above_anomaly"):
         ("thermal (elastic)", "horizontal stress at the top of the crust above the anomaly", 1),
     ("thermal_anomaly", "horizontal_compression_base_of_lithosphere_above_anomaly"):
@@ -504,6 +510,12 @@ def chapter7(binary, outdir):
     with open(os.path.join(out, "subduction_comparison.csv")) as f:
         table = list(csv.DictReader(f))
     ours = {}
+    # Thesis §7.2: the plate boundary's circle (centre (445.456, -305) km,
+    # radius 300 km, Geometry/Subduction zone) "so that the subducting
+    # plate has a dip of 45 degrees at the base" (y = -95 km): the angle of
+    # its tangent there.
+    dx, dy = math.sqrt(300.0 ** 2 - (305.0 - 95.0) ** 2), 305.0 - 95.0
+    ours[("subduction_mesh_geometry", "fault_dip_at_model_base")] = math.degrees(math.atan2(dx, dy))
     for key, (experiment, start, factor) in SUBDUCTION.items():
         for r in table:
             if r["experiment"] == experiment and r["quantity"].startswith(start) and r["ours"]:
@@ -521,6 +533,35 @@ def chapter4(binary, outdir):
     for element in ("CST", "CSQ"):
         ours[("cantilever_%s_27node" % element.lower(),
               "max_neutral_fibre_deflection_fraction_of_analytic")] = 100 * tip[element] / tip["beam"]
+    # The refined constant-strain meshes (§4.3.2): the thesis's 288-node CST
+    # mesh as a 32 x 9 grid (496 triangles) and its 85-node CSQ mesh as
+    # 17 x 5 (64 CSQs), tip deflection error against beam theory; and the
+    # smallest grid within 5 % with square cells and a node on the neutral
+    # axis (thesis_mesh_elements.smallest_grid_within()).
+    cst_error = abs(thesis_mesh_elements.grid_cantilever(32, 9, "CST")[1])
+    csq_error = abs(thesis_mesh_elements.grid_cantilever(17, 5, "CSQ")[1])
+    ours[("cantilever_cst_288node", "deflection_error_vs_analytic_upper_bound")] = cst_error
+    ours[("cantilever_constant_strain_refined", "deflection_error_tolerance_upper_bound")] = \
+        max(cst_error, csq_error)
+    _, _, nodes, elements, _ = thesis_mesh_elements.smallest_grid_within("CST")
+    ours[("cantilever_cst_288node", "nodes_needed_for_5pct_accuracy")] = nodes
+    ours[("cantilever_cst_288node", "elements_needed_for_5pct_accuracy")] = elements
+    _, _, nodes, elements, _ = thesis_mesh_elements.smallest_grid_within("CSQ")
+    ours[("cantilever_csq_85node", "nodes_needed_for_5pct_accuracy")] = nodes
+    ours[("cantilever_csq_85node", "elements_needed_for_5pct_accuracy")] = elements
+    # The lithostatic column on the thesis's 9 nodes and 8 CSTs (§4.4.2),
+    # the diagonals that give its skew: top edge nodes' subsidence against
+    # equation 4.4, each triangle's principal stresses against the exact
+    # ones at its centroid.
+    column = thesis_mesh_elements.lithostatic_column_cst(diagonal=1)
+    ours[("lithostatic_column_cst_9node", "top_left_node_subsidence_excess_over_analytic")] = \
+        column["left"] - 100
+    ours[("lithostatic_column_cst_9node", "top_right_node_subsidence_deficit_below_analytic")] = \
+        100 - column["right"]
+    ours[("lithostatic_column_cst_9node", "principal_stress_rotation_from_analytic_upper_bound")] = \
+        column["rotation"]
+    ours[("lithostatic_column_cst_9node", "principal_stress_magnitude_error_upper_bound")] = \
+        column["magnitude"]
     # The lithostatic column (§4.4): the top surface's subsidence, and
     # equation 4.4 with the column's E, nu, rho and h = 10 km.
     out = os.path.join(outdir, "lithostatic_column")

@@ -18,7 +18,31 @@ forces), nodes on a 9 x 3 grid. Tip deflection v(0, 0) with
 against beam theory -P l^3/(3 E I) (E' = E/(1 - nu^2) in plane strain).
 Measured: plane strain beam -1.32141, Q2 -1.34115 (+1.49 %), P2 triangles
 -1.30180 / -1.30180 / -1.30144 (-1.5 %); plane stress beam -1.50588, Q2
--1.54861 (+2.84 %), P2 -1.52596 (+1.33 %)."""
+-1.54861 (+2.84 %), P2 -1.52596 (+1.33 %).
+
+The refined constant-strain meshes of §4.3.2 (grid_cantilever(), same
+beam, end and load on an nx x ny node grid; error against beam theory,
+plane strain / plane stress): the thesis's 288 nodes and 496 CSTs as a
+32 x 9 grid (its figure 4.10 is not in the text), -2.75 % / -1.36 %
+(alternating diagonals -0.23 %); its 85 nodes and 64 CSQs as a 17 x 5
+grid, -0.33 % / -0.35 %. The
+smallest grid within 5 % on the family with square cells and a node on
+the neutral axis (nx - 1 = 4 (ny - 1), ny odd; smallest_grid_within()):
+CST 33 x 9 (297 nodes, 512 triangles, -2.63 % / -1.25 %; 25 x 7 gives
+-7.17 %), CSQ 17 x 5 (the thesis's mesh; 9 x 3 gives -10.5 %). With ny
+even allowed as well: CST 29 x 8 (232 nodes, -4.48 %), CSQ 13 x 4
+(52 nodes, -3.33 %).
+
+The lithostatic column of §4.4.2 on the thesis's 9 nodes and 8 CSTs
+(lithostatic_column_cst(), base on rollers): with the diagonals \\ the
+top left node subsides 109.8 % and the top right one 90.9 % of equation
+4.4's 12.717 m (thesis: +10 % and -10 %), / mirrors this; the principal
+axes turn by up to 11.4 degrees (thesis 13) and the principal stresses
+differ from the exact ones at the triangles' centroids by up to 12.7 %
+in the lower row of triangles and up to 54.6 % in the upper row (thesis:
+up to 10 %). A fixed base changes the subsidences to 109.5 % and 91.0 %.
+Alternating diagonals meeting at the centre give a symmetric 102.4 %,
+7.5 degrees and 11.0 %."""
 import math
 import os
 import sys
@@ -184,6 +208,205 @@ def triangles(diagonal):
             elements.append([n(0, 0), n(2, 0), n(0, 2), n(1, 0), n(1, 1), n(0, 1)])
             elements.append([n(2, 0), n(2, 2), n(0, 2), n(2, 1), n(1, 2), n(1, 1)])
     return elements
+
+
+def linear_triangle(coords, D):
+    """Stiffness (6 x 6, unit thickness), strain matrix B and area of the
+    constant-strain triangle with the vertices @p coords (closed form of
+    tip_deflection()'s p1 with CENTROID_RULE)."""
+    (x1, y1), (x2, y2), (x3, y3) = coords
+    twice_area = (x2 - x1) * (y3 - y1) - (x3 - x1) * (y2 - y1)
+    b = [(y2 - y3) / twice_area, (y3 - y1) / twice_area, (y1 - y2) / twice_area]
+    c = [(x3 - x2) / twice_area, (x1 - x3) / twice_area, (x2 - x1) / twice_area]
+    B = [[0.0] * 6 for _ in range(3)]
+    for a in range(3):
+        B[0][2 * a], B[1][2 * a + 1], B[2][2 * a], B[2][2 * a + 1] = b[a], c[a], c[a], b[a]
+    DB = [[sum(D[r][k] * B[k][col] for k in range(3)) for col in range(6)] for r in range(3)]
+    area = twice_area / 2
+    K = [[area * sum(B[k][i] * DB[k][j] for k in range(3)) for j in range(6)] for i in range(6)]
+    return K, B, area
+
+
+def solve_banded(entries, rhs):
+    """x of K x = rhs for K symmetric positive definite, given as
+    {(i, j): K_ij}: Cholesky within the band. The refined meshes of
+    §4.3.2 have several hundred freedoms, too many for solve_dense's full
+    elimination in pure Python."""
+    n = len(rhs)
+    w = max(abs(i - j) for i, j in entries)
+    L = [[0.0] * (w + 1) for _ in range(n)]  # L[i][i - j] for j in [i - w, i]
+    for (i, j), value in entries.items():
+        if j <= i:
+            L[i][i - j] = value
+    for i in range(n):
+        row = L[i]
+        for j in range(max(0, i - w), i + 1):
+            other = L[j]
+            s = row[i - j] - sum(row[i - k] * other[j - k] for k in range(max(0, i - w), j))
+            row[i - j] = math.sqrt(s) if j == i else s / other[0]
+    y = [0.0] * n
+    for i in range(n):
+        y[i] = (rhs[i] - sum(L[i][i - k] * y[k] for k in range(max(0, i - w), i))) / L[i][0]
+    x = [0.0] * n
+    for i in reversed(range(n)):
+        x[i] = (y[i] - sum(L[k][k - i] * x[k] for k in range(i + 1, min(n, i + w + 1)))) / L[i][0]
+    return x
+
+
+def solve_triangles(nodes, elements, D, forces, fixed):
+    """Displacements [u_x, u_y, ...] of the constant-strain triangles
+    @p elements on @p nodes under the nodal @p forces, the freedoms in
+    @p fixed held at zero. The freedoms are ordered by the nodes' x, then
+    y, so that the stiffness is banded for the grids here."""
+    order = sorted(range(len(nodes)), key=lambda a: (nodes[a][0], nodes[a][1]))
+    rank = {a: r for r, a in enumerate(order)}
+    free = sorted((i for i in range(2 * len(nodes)) if i not in fixed),
+                  key=lambda i: 2 * rank[i // 2] + i % 2)
+    index = {i: r for r, i in enumerate(free)}
+    entries = {}
+    for element in elements:
+        K, _, _ = linear_triangle([nodes[a] for a in element], D)
+        dofs = [2 * a + d for a in element for d in range(2)]
+        for p, di in enumerate(dofs):
+            for q, dj in enumerate(dofs):
+                if di in index and dj in index:
+                    key = (index[di], index[dj])
+                    entries[key] = entries.get(key, 0.0) + K[p][q]
+    x = solve_banded(entries, [forces[i] for i in free])
+    u = [0.0] * (2 * len(nodes))
+    for i, value in zip(free, x):
+        u[i] = value
+    return u
+
+
+def grid_cantilever(nx, ny, kind="CST", strain=True, diagonal=0):
+    """Tip deflection v(0, 0) and its error against beam theory (per cent,
+    negative: too stiff) of the §4.3 cantilever on an @p nx x @p ny node
+    grid with the thesis's constant-strain elements: each rectangle cut
+    into two CSTs along a diagonal (@p kind "CST", @p diagonal as in
+    cst_triangles()) or a CSQ of four CSTs about a centre node (@p kind
+    "CSQ"). The beam, the fixed end and the end load are
+    thesis_cantilever()'s: the parabolic shear on x = 0 as forces
+    consistent with the linear edges between its nodes (3 Gauss points
+    per edge, exact for the cubic integrand). With an even @p ny the tip
+    value is interpolated along the linear edge on x = 0. The 9 x 3 grid
+    reproduces thesis_cantilever()'s CST and CSQ values; the thesis's
+    refined meshes (§4.3.2) are 32 x 9 (CST: 288 nodes, 496 triangles)
+    and 17 x 5 (CSQ: 85 nodes, 64 quadrilaterals)."""
+    def at(i, j):
+        return ny * i + j
+    nodes = [(L * i / (nx - 1), -C + 2 * C * j / (ny - 1)) for i in range(nx) for j in range(ny)]
+    elements = []
+    for i in range(nx - 1):
+        for j in range(ny - 1):
+            a, b, c, d = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
+            if kind == "CSQ":
+                nodes.append(tuple(sum(nodes[k][r] for k in (a, b, c, d)) / 4 for r in range(2)))
+                corners = [a, b, c, d]
+                elements += [[corners[k], corners[(k + 1) % 4], len(nodes) - 1] for k in range(4)]
+            elif (diagonal if diagonal < 2 else (i + j) % 2) == 0:
+                elements += [[a, b, c], [a, c, d]]
+            else:
+                elements += [[a, b, d], [b, c, d]]
+    forces = [0.0] * (2 * len(nodes))
+    inertia = 2 * C ** 3 / 3
+    for j in range(ny - 1):
+        y0, y1 = nodes[at(0, j)][1], nodes[at(0, j + 1)][1]
+        for t, weight in GAUSS3:
+            y = (y0 + y1) / 2 + (y1 - y0) / 2 * t
+            traction = -P * (C * C - y * y) / (2 * inertia)
+            for k, value in ((j, (1 - t) / 2), (j + 1, (1 + t) / 2)):
+                forces[2 * at(0, k) + 1] += weight * (y1 - y0) / 2 * value * traction
+    fixed = {2 * at(nx - 1, j) + d for j in range(ny) for d in range(2)}
+    u = solve_triangles(nodes, elements, elasticity(strain), forces, fixed)
+    below = (ny - 1) // 2
+    s = -nodes[at(0, below)][1] / (nodes[at(0, below + 1)][1] - nodes[at(0, below)][1])
+    tip = (1 - s) * u[2 * at(0, below) + 1] + s * u[2 * at(0, below + 1) + 1]
+    beam = -P * L ** 3 / (3 * (E / (1 - NU * NU) if strain else E) * inertia)
+    return tip, 100 * (tip / beam - 1)
+
+
+def smallest_grid_within(kind, tolerance=5.0, strain=True, diagonal=0):
+    """The thesis's redesign "until they gave results which fell within 5%
+    of the analytic solution" (§4.3.2) on one family of grids: square
+    cells (nx - 1 = 4 (ny - 1), as the thesis's 9 x 3 and 17 x 5 grids and
+    near its 32 x 9) with a node on the neutral axis (ny odd), refined
+    until |grid_cantilever()'s error| <= @p tolerance. Returns (nx, ny,
+    nodes, elements, error): nodes of the grid (a CSQ's centre node is
+    internal and not counted, as in the thesis's 85), elements as
+    triangles for CST and quadrilaterals for CSQ."""
+    ny = 3
+    while True:
+        nx = 4 * (ny - 1) + 1
+        error = grid_cantilever(nx, ny, kind, strain, diagonal)[1]
+        if abs(error) <= tolerance:
+            cells = (nx - 1) * (ny - 1)
+            return nx, ny, nx * ny, 2 * cells if kind == "CST" else cells, error
+        ny += 2
+
+
+def lithostatic_column_cst(diagonal=1, fixed_base=False, n=3):
+    """The lithostatic column of §4.4.2 with the thesis's CST mesh: a
+    10 km square on an @p n x @p n node grid (the thesis: 3 x 3 nodes,
+    8 triangles, figure 4.14), each square cut along a diagonal as in
+    cst_triangles() (1, the default: \\, gives the thesis's skew: the
+    top left node subsides too far, the top right one too little); the
+    column of tests/lithostatic_column/column.prm (E = 9e10 Pa, nu = 0.25,
+    rho = 2800 kg/m^3, g = 9.81, plane strain), sides on vertical rollers,
+    base on horizontal rollers (the thesis's and column.prm's; with
+    @p fixed_base u_x is held there too), gravity as consistent nodal
+    forces (a third of each triangle's weight at each vertex; forces
+    lumped by tributary area give the exact nodal displacements and no
+    skew). Returns the top surface's subsidence at the left and right
+    edges in per cent of equation 4.4's 12.717 m, and per triangle
+    (centroid x, y; rotation of the principal axes from horizontal and
+    vertical, degrees; largest relative error of the two principal
+    stresses, per cent), each triangle's constant stress against the
+    exact one at its centroid (sigma_yy = rho g y, sigma_xx =
+    nu/(1-nu) sigma_yy; the exact stress is linear, so this is also the
+    triangle's mean), with the maxima over the triangles."""
+    young, nu, rho, g, h = 9e10, 0.25, 2800.0, 9.81, 1e4
+    f = young / ((1 + nu) * (1 - 2 * nu))
+    D = [[f * (1 - nu), f * nu, 0], [f * nu, f * (1 - nu), 0], [0, 0, f * (1 - 2 * nu) / 2]]
+
+    def at(i, j):
+        return n * i + j
+    nodes = [(h * i / (n - 1), -h + h * j / (n - 1)) for i in range(n) for j in range(n)]
+    elements = []
+    for i in range(n - 1):
+        for j in range(n - 1):
+            a, b, c, d = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
+            if (diagonal if diagonal < 2 else (i + j) % 2) == 0:
+                elements += [[a, b, c], [a, c, d]]
+            else:
+                elements += [[a, b, d], [b, c, d]]
+    forces = [0.0] * (2 * len(nodes))
+    for element in elements:
+        area = linear_triangle([nodes[a] for a in element], D)[2]
+        for a in element:
+            forces[2 * a + 1] -= rho * g * area / 3
+    fixed = {2 * at(i, j) for i in (0, n - 1) for j in range(n)}
+    fixed |= {2 * at(i, 0) + d for i in range(n) for d in ((0, 1) if fixed_base else (1,))}
+    u = solve_triangles(nodes, elements, D, forces, fixed)
+    exact = (1 + nu) * (1 - 2 * nu) * rho * g * h * h / (2 * young * (1 - nu))
+    per_element = []
+    for element in elements:
+        B = linear_triangle([nodes[a] for a in element], D)[1]
+        ue = [u[2 * a + d] for a in element for d in range(2)]
+        strain = [sum(B[r][k] * ue[k] for k in range(6)) for r in range(3)]
+        sxx, syy, sxy = (sum(D[r][k] * strain[k] for k in range(3)) for r in range(3))
+        x, y = (sum(nodes[a][k] for a in element) / 3 for k in range(2))
+        exact_yy = rho * g * y
+        exact_xx = nu / (1 - nu) * exact_yy
+        angle = abs(math.degrees(0.5 * math.atan2(2 * sxy, sxx - syy))) % 90
+        mean, radius = (sxx + syy) / 2, math.hypot((sxx - syy) / 2, sxy)
+        error = max(abs((mean + radius) / exact_xx - 1), abs((mean - radius) / exact_yy - 1))
+        per_element.append((x, y, min(angle, 90 - angle), 100 * error))
+    return {"left": -100 * u[2 * at(0, n - 1) + 1] / exact,
+            "right": -100 * u[2 * at(n - 1, n - 1) + 1] / exact,
+            "rotation": max(e[2] for e in per_element),
+            "magnitude": max(e[3] for e in per_element),
+            "elements": per_element}
 
 
 if __name__ == "__main__":
