@@ -274,6 +274,57 @@ def write_extra_runs(runs, path):
                                                                            (-1, 1), (-1, -1))])
 
 
+def fshear_convergence(binary, outdir):
+    """The plane normal fault's throw at 30 and 50 MPa against the mesh
+    (50 to 3 200 cells) with FSHEAR's reading (factor 1, points held) and
+    with ours (Newton, the traction at the points): OUTDIR/fshear_throws.csv
+    and .png, the figure of doc/thesis_comparison.md#fshear."""
+    fshear = ["Faults/Sliding solver/Method=thesis", "Faults/Sliding solver/Excess shear tolerance=1e5",
+              "Faults/Sliding solver/Maximum iterations=5000", "Faults/Sliding solver/Convergence factor=1",
+              "Faults/Sliding solver/Thesis stress reading=element centroids",
+              "Faults/Sliding solver/Hold sliding points at the limit=true"]
+    rows = []
+    print("chapter 6: FSHEAR's reading against the mesh ...", flush=True)
+    for load in (30, 50):
+        for refinement in range(4):
+            for reading, sets in (("element centroids", fshear), ("interface points", [])):
+                out = os.path.join(outdir, "faults", "fshear_convergence",
+                                   "%d_%d_%s" % (load, refinement, reading.split()[0]))
+                if run(binary, "normal_fault.prm", out, sets + [
+                        "Mesh refinement/Initial global refinement=%d" % refinement,
+                        "Loads/Tractions/left/Normal traction=%de6" % load], may_fail=True):
+                    rows.append((load, 50 * 4 ** refinement, reading, FaultRun(out).throw()))
+    with open(os.path.join(outdir, "fshear_throws.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["tension_MPa", "cells", "reading", "throw_m"])
+        writer.writerows(rows)
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("reproduce_thesis.py: matplotlib missing, no figure")
+        return
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.8))
+    for ax, load, thesis in ((axes[0], 30, 26), (axes[1], 50, 620)):
+        for reading, style in (("element centroids", "o-"), ("interface points", "s--")):
+            points = [(c, t) for l, c, r, t in rows if l == load and r == reading]
+            label = ("FSHEAR's reading (element centroids)" if reading == "element centroids"
+                     else "lithostress (traction at the points)")
+            ax.plot([c for c, _ in points], [t for _, t in points], style, label=label)
+        ax.axhline(thesis, color="k", lw=0.8, ls=":")
+        ax.text(3000, thesis, "thesis %g m" % thesis, ha="right", va="bottom", fontsize=8)
+        ax.axvline(200, color="0.6", lw=0.8)
+        ax.set_xscale("log")
+        ax.set_xlabel("cells (200: two fault elements, as the thesis)")
+        ax.set_ylabel("throw [m]")
+        ax.set_title("plane normal fault, %d MPa tension" % load)
+    axes[0].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(outdir, "fshear_throws.png"), dpi=120)
+    plt.close(fig)
+
+
 def flexural_change(runs, side, where, sliding="normal_50", elastic="normal_50_elastic"):
     """The largest change of sigma_xx [MPa] at the top or base of the
     downthrown (side +1, x > 500 km) or upthrown (-1) side between the
@@ -653,6 +704,7 @@ def main():
     runs = run_faults(args.binary, outdir, not args.skip_thesis_iteration)
     ours.update(chapter6(runs, run_graben(args.binary, outdir)))
     write_extra_runs(runs, os.path.join(outdir, "thesis_runs.csv"))
+    fshear_convergence(args.binary, outdir)
     if not args.skip_subduction:
         ours.update(chapter7(args.binary, outdir))
     explanations = load_explanations()
