@@ -159,6 +159,16 @@ namespace lithostress
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
                         "must be positive");
+    // The thesis method's readings mean nothing to Newton: say so rather
+    // than ignore them.
+    if (parameters.method == Method::newton &&
+        (parameters.element_stresses || parameters.hold_at_limit))
+      throw_input_error(std::string("Faults/Sliding solver/") +
+                          (parameters.element_stresses
+                             ? "Thesis stress reading"
+                             : "Hold sliding points at the limit"),
+                        "applies to Method = thesis only (Method is "
+                        "newton)");
     for (const auto &[entry, value] :
          {std::make_pair("Residual tolerance", parameters.residual_tolerance),
           std::make_pair("Linear solver tolerance",

@@ -71,6 +71,7 @@ expected = {
     "fault_outside_box": "Geometry/Layered box/Fault surface x>: the fault must cross the box from the top to the base",
     "friction_negative": "Faults/fault/Friction coefficient>: must be at least 0, got -0.1",
     "sliding_tolerance_zero": "Faults/Sliding solver/Linear solver tolerance>: must be positive",
+    "thesis_reading_with_newton": "Faults/Sliding solver/Thesis stress reading>: applies to Method = thesis only",
     "sliding_solver_unknown": "The entry value magic for the entry named Linear solver does not match the given pattern",
     "fault_stiffness_zero": "Faults/fault/Shear stiffness>: must be greater than 0, got 0",
     "fault_stiffness_missing": "Faults/fault/Shear stiffness>: is needed by the elastic law",
