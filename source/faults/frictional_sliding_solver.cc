@@ -1103,6 +1103,18 @@ namespace lithostress
       return false;
     }
 
+    /** c.u_ghost := c.u, and in exact contact the normal tractions of c.u:
+     * what the thesis iteration's excess shear is read from. */
+    template <int dim>
+    void
+    read_iterate(SlidingContext<dim> &c)
+    {
+      if (c.contact)
+        c.contact_tractions(c.u);
+      else
+        c.u_ghost = c.u;
+    }
+
     /**
      * The largest excess shear over the friction limit at the elastic
      * traction of c.u (thesis §5.5, FSHEAR), moved into @p slip times the
@@ -1118,10 +1130,7 @@ namespace lithostress
                         std::vector<bool>   &held)
     {
       using PointValues = typename SlidingContext<dim>::PointValues;
-      if (c.contact)
-        c.contact_tractions(c.u);
-      else
-        c.u_ghost = c.u;
+      read_iterate(c);
       double ex = 0;
       c.faults.for_each_interface_point(
         c.dof_handler, c.fe_space, &c.u_ghost, [&](const PointValues &values) {
@@ -1169,10 +1178,7 @@ namespace lithostress
                                 std::vector<bool>         &held)
     {
       using PointValues = typename SlidingContext<dim>::PointValues;
-      if (c.contact)
-        c.contact_tractions(c.u);
-      else
-        c.u_ghost = c.u;
+      read_iterate(c);
       double                    ex = 0;
       std::vector<unsigned int> face;
       Point<dim>                first;
