@@ -35,8 +35,7 @@ is measured is in the `quantity` text and in doc/subduction.md.
 Usage: reproduce_subduction.py OUTDIR [--binary PATH] [--global-refinement N]
                                [--only NAME,...] [--elastic-only] [--ranks N]
                                [--width 920] [--measure-only] [--set ENTRY=VALUE]
-(--set entries under Faults/ go only to the runs with a frictional plate
-boundary, the coupling series.)
+(--set entries go to every run: pick the runs they concern by --only.)
 """
 import argparse
 import csv
@@ -261,20 +260,15 @@ def measure(table, name, directory, stage, thesis):
         add("right_regional", "mean horizontal stress in the continental "
             "upper crust at the right edge (0-10 km)",
             band_mean(right, "sigma_xx", 0, 10) * MPA, "MPa")
-        add("right_crust", "mean horizontal stress in the continental crust "
-            "at the right edge (0-35 km)",
-            band_mean(right, "sigma_xx", 0, 35) * MPA, "MPa")
-        add("right_mantle", "mean horizontal stress in the continental "
-            "mantle at the right edge (35-95 km)",
-            band_mean(right, "sigma_xx", 35, 95) * MPA, "MPa")
-        # The thesis's §7.5 numbers are deviatoric stresses (its figures
-        # 7.66, 7.67): the layer means of deviatoric sigma_xx as well.
-        add("right_crust_dev", "mean horizontal deviatoric stress in the "
-            "continental crust at the right edge (0-35 km)",
-            band_mean(right, "deviatoric_xx", 0, 35) * MPA, "MPa")
-        add("right_mantle_dev", "mean horizontal deviatoric stress in the "
-            "continental mantle at the right edge (35-95 km)",
-            band_mean(right, "deviatoric_xx", 35, 95) * MPA, "MPa")
+        # The continental layers' means, of sigma_xx and of its deviatoric
+        # part (the thesis's §7.5 numbers are deviatoric stresses, its
+        # figures 7.66, 7.67).
+        for column, suffix, what in (("sigma_xx", "", "horizontal stress"),
+                                     ("deviatoric_xx", "_dev", "horizontal deviatoric stress")):
+            for layer, top, bottom in (("crust", 0, 35), ("mantle", 35, 95)):
+                add("right_%s%s" % (layer, suffix), "mean %s in the continental %s at the right "
+                    "edge (%d-%d km)" % (what, layer, top, bottom),
+                    band_mean(right, column, top, bottom) * MPA, "MPa")
     if name == "slab_pull_90":
         n = nodes_at(directory)
         lid = (n["material_id"] <= 1) & (n["x"] < TRENCH_KM * 1e3)
@@ -344,17 +338,17 @@ def measure(table, name, directory, stage, thesis):
         add("left_regional", "mean horizontal stress in the subducting plate "
             "at the left edge (whole thickness)",
             band_mean(left, "sigma_xx", 0, 90) * MPA, "MPa")
+    if name in ("basal_shear",) or name.startswith("thermal"):
+        n = nodes_at(directory)
     if name.startswith("thermal"):
         # The flexure's axis (thesis §7.6.2: "a flexure of the overlying
         # plate with an axis at the centre of the temperature anomaly"):
         # where the bending's tension at the land surface (y = 0) peaks.
-        n = nodes_at(directory)
         land = (np.abs(n["y"]) < 1.0) & (n["x"] > 600e3)
         axis = n["x"][land][np.argmax(n["stress"][:, 0][land])]
         add("flexure_axis", "x of the largest horizontal tension at the land "
             "surface (the flexure's axis)", float(axis / 1e3), "km")
     if name in ("basal_shear",) or name.startswith("thermal"):
-        n = nodes_at(directory)
         failed = n["griffith_degree_of_failure"] <= 0
         away = failed & (np.abs(n["x"] - 780e3) > 60e3) \
             if name.startswith("thermal") else failed
@@ -401,6 +395,11 @@ def comparisons(table, rows):
                 return o
         return None
 
+    def change(before, after, text_start):
+        """value(after) - value(before), or None if either is missing."""
+        a, b = value(before, text_start), value(after, text_start)
+        return None if None in (a, b) else b - a
+
     for stage in ("elastic", "5Myr"):
         a = value("slab_pull_63 (%s)" % stage, "mean horizontal stress in the "
                   "subducting")
@@ -437,37 +436,35 @@ def comparisons(table, rows):
         # k_s 1e9): deviatoric layer means against the 90 degree run, which
         # has none.
         vertical = "slab_pull_90 (%s)" % stage
+        elastic = stage == "elastic"
         for layer, depths, thesis in (("crust", "0-35 km", 17.5), ("mantle", "35-95 km", 40)):
             key = "mean horizontal deviatoric stress in the continental " + layer
-            lo, we = value(locked, key), value(weak, key)
-            if None not in (lo, we):
+            fall = change(locked, weak, key)
+            if fall is not None:
                 table.add("coupling (%s)" % stage, "fall of the overlying plate's "
                           "regional deviatoric compression in the %s (right edge, %s), "
-                          "locked -> k_s 1e9" % (layer, depths), we - lo,
-                          thesis if stage == "elastic" else None, "MPa")
-        for run_name, label in ((locked, "locked"), (weak, "k_s 1e9")):
-            for layer, depths in (("crust", "0-35 km"), ("mantle", "35-95 km")):
-                key = "mean horizontal deviatoric stress in the continental " + layer
-                a, b = value(run_name, key), value(vertical, key)
-                if None not in (a, b):
+                          "locked -> k_s 1e9" % (layer, depths), fall,
+                          thesis if elastic else None, "MPa")
+            for run_name, label in ((locked, "locked"), (weak, "k_s 1e9")):
+                added = change(run_name, vertical, key)
+                if added is not None:
                     table.add("coupling (%s)" % stage,
                               "compression the 45 degree slab pull adds to the "
                               "overlying plate's %s (deviatoric, right edge, %s), "
                               "%s, against the 90 degree run" % (layer, depths, label),
-                              b - a, "< 5" if (stage == "elastic" and label != "locked"
+                              added, "< 5" if (elastic and label != "locked"
                                                and layer == "crust") else None, "MPa")
-        key = "mean horizontal stress in the subducting plate's elastic lid"
-        lo, we = value(locked, key), value(weak, key)
-        if None not in (lo, we):
+        rise = change(locked, weak, "mean horizontal stress in the subducting plate's elastic lid")
+        if rise is not None:
             table.add("coupling (%s)" % stage, "rise of the subducting lid's regional "
                       "tension (left edge, 0-30 km below the sea floor), locked -> k_s 1e9",
-                      we - lo, 40 if stage == "elastic" else None, "MPa")
-        key = "largest horizontal deviatoric tension in the continental crust"
-        pull, density = value("slab_pull_90 (%s)" % stage, key), value("density (%s)" % stage, key)
-        if None not in (pull, density):
+                      rise, 40 if elastic else None, "MPa")
+        added = change("density (%s)" % stage, "slab_pull_90 (%s)" % stage,
+                       "largest horizontal deviatoric tension in the continental crust")
+        if added is not None:
             table.add("slab_pull 90 - density (%s)" % stage, "right-edge tension the vertical "
-                      "slab pull adds to the lateral density model's", pull - density,
-                      10 if stage == "elastic" else None, "MPa")
+                      "slab pull adds to the lateral density model's", added,
+                      10 if elastic else None, "MPa")
         we = value(weak, "mean horizontal stress in the continental crust")
         if we is not None:
             table.add("coupling (%s)" % stage, "regional compression left in "
@@ -595,8 +592,7 @@ def main():
     table = Table()
     timing = []
     for name, prm, sets in configs:
-        sets = list(sets) + [x for x in args.set
-                             if not x.startswith("Faults/") or name.startswith("coupling")]
+        sets = list(sets) + args.set
         if args.global_refinement is not None:
             sets.append("Mesh refinement/Initial global refinement=%d" %
                         args.global_refinement)

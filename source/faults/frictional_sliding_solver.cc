@@ -1115,6 +1115,44 @@ namespace lithostress
         c.u_ghost = c.u;
     }
 
+    /** The shear @p tau beyond the friction limit @p limit, signed as
+     * @p tau (FSHEAR's STEXS = SHAV -+ FRS); negative where |tau| is below
+     * the limit (a point held at it). */
+    inline double
+    beyond_limit(const double tau, const double limit)
+    {
+      return tau - (tau < 0 ? -1 : 1) * limit;
+    }
+
+    /**
+     * FSHEAR's step at point @p i: the excess @p e moved into @p slip times
+     * the convergence factor (nodal forces e through the spring k_s);
+     * @p slid marks the point if e moves it; at the first iteration a
+     * point @p over the limit is @p held there from then on (Hold sliding
+     * points at the limit); its state in c.responses follows.
+     */
+    template <int dim>
+    void
+    move_excess_into_slip(SlidingContext<dim> &c,
+                          const unsigned int   i,
+                          const double         e,
+                          const bool           over,
+                          const double         shear_stiffness,
+                          std::vector<double> &slip,
+                          std::vector<bool>   &slid,
+                          std::vector<bool>   &held)
+    {
+      if (c.iteration == 1 && c.settings.hold_at_limit && over)
+        held[i] = true;
+      if (e != 0)
+        slid[i] = true;
+      slip[i] += c.settings.convergence_factor * e / shear_stiffness;
+      SlipState &state = c.responses[i].state;
+      state            = state == SlipState::open ? SlipState::open
+                         : slid[i]                ? SlipState::sliding
+                                                  : SlipState::stuck;
+    }
+
     /**
      * The largest excess shear over the friction limit at the elastic
      * traction of c.u (thesis §5.5, FSHEAR), moved into @p slip times the
@@ -1142,23 +1180,19 @@ namespace lithostress
           CoulombFriction::Response &r   = c.responses[i];
           r                              = c.respond(values, slip[i]);
           const double tau = law.shear_stiffness * (w * p.shear - slip[i]);
-          double       e   = 0;
-          if (r.state == SlipState::open)
-            e = tau;
-          else if (r.state == SlipState::sliding || held[i])
-            e = tau - (tau < 0 ? -1 : 1) * r.friction_limit;
-          // FSHEAR's IIT: over the limit at the first iteration, held at
-          // it from then on (Hold sliding points at the limit).
-          if (c.iteration == 1 && c.settings.hold_at_limit &&
-              r.state == SlipState::sliding)
-            held[i] = true;
-          ex = std::max(ex, std::abs(e));
-          if (e != 0)
-            slid[i] = true;
-          slip[i] += c.settings.convergence_factor * e / law.shear_stiffness;
-          r.state = r.state == SlipState::open ? SlipState::open
-                    : slid[i]                  ? SlipState::sliding
-                                               : SlipState::stuck;
+          const double e   = r.state == SlipState::open ? tau
+                             : r.state == SlipState::sliding || held[i]
+                               ? beyond_limit(tau, r.friction_limit)
+                               : 0.;
+          ex               = std::max(ex, std::abs(e));
+          move_excess_into_slip(c,
+                                i,
+                                e,
+                                r.state == SlipState::sliding,
+                                law.shear_stiffness,
+                                slip,
+                                slid,
+                                held);
         });
       return Utilities::MPI::max(ex, c.communicator);
     }
@@ -1197,23 +1231,12 @@ namespace lithostress
           const double           limit =
             law.friction_coefficient * std::max(0., -r.effective_normal);
           const bool   over = std::abs(r.shear) > limit;
-          const double e    = over || held[face[0]]
-                                ? r.shear - (r.shear < 0 ? -1 : 1) * limit
-                                : 0;
-          ex                = std::max(ex, std::abs(e));
+          const double e =
+            over || held[face[0]] ? beyond_limit(r.shear, limit) : 0.;
+          ex = std::max(ex, std::abs(e));
           for (const unsigned int j : face)
-            {
-              if (c.iteration == 1 && c.settings.hold_at_limit && over)
-                held[j] = true;
-              if (e != 0)
-                slid[j] = true;
-              slip[j] +=
-                c.settings.convergence_factor * e / law.shear_stiffness;
-              auto &state = c.responses[j].state;
-              state       = state == SlipState::open ? SlipState::open
-                            : slid[j]                ? SlipState::sliding
-                                                     : SlipState::stuck;
-            }
+            move_excess_into_slip(
+              c, j, e, over, law.shear_stiffness, slip, slid, held);
           face.clear();
         });
       return Utilities::MPI::max(ex, c.communicator);

@@ -58,12 +58,12 @@ def node(i, j):
     return 9 * j + i
 
 
-def elasticity(strain):
+def elasticity(strain, young=E, nu=NU):
     if strain:
-        f = E / ((1 + NU) * (1 - 2 * NU))
-        return [[f * (1 - NU), f * NU, 0], [f * NU, f * (1 - NU), 0], [0, 0, f * (1 - 2 * NU) / 2]]
-    f = E / (1 - NU * NU)
-    return [[f, f * NU, 0], [f * NU, f, 0], [0, 0, f * (1 - NU) / 2]]
+        f = young / ((1 + nu) * (1 - 2 * nu))
+        return [[f * (1 - nu), f * nu, 0], [f * nu, f * (1 - nu), 0], [0, 0, f * (1 - 2 * nu) / 2]]
+    f = young / (1 - nu * nu)
+    return [[f, f * nu, 0], [f * nu, f, 0], [0, 0, f * (1 - nu) / 2]]
 
 
 def p2(xi, eta):
@@ -149,13 +149,14 @@ def p1(xi, eta):
 CENTROID_RULE = [(1 / 3, 1 / 3, 1 / 2)]
 
 
-def cst_triangles(diagonal):
-    """The 27 nodes' 16 squares, each cut into two CSTs along a diagonal
-    (0: /, 1: \\, 2: alternating)."""
+def split_rectangles(nx, ny, at, diagonal):
+    """The (nx - 1) x (ny - 1) rectangles of a node grid numbered by
+    @p at(i, j), each cut into two CSTs along a diagonal (0: /, 1: \\,
+    2: alternating)."""
     elements = []
-    for i in range(8):
-        for j in range(2):
-            a, b, c, d = node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)
+    for i in range(nx - 1):
+        for j in range(ny - 1):
+            a, b, c, d = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
             if (diagonal if diagonal < 2 else (i + j) % 2) == 0:
                 elements += [[a, b, c], [a, c, d]]
             else:
@@ -163,19 +164,30 @@ def cst_triangles(diagonal):
     return elements
 
 
-def csq_mesh():
-    """The 16 squares as constant-strain quadrilaterals: four CSTs meeting
-    at a centre node (thesis §3.3.2; the centre node's freedoms are
-    condensed in the thesis, kept here: the same stiffness)."""
-    nodes = list(NODES)
+def quadrilaterals_of_four(nodes, nx, ny, at):
+    """The rectangles of the grid as constant-strain quadrilaterals: four
+    CSTs meeting at a centre node, appended to @p nodes (thesis §3.3.2;
+    the centre node's freedoms are condensed in the thesis, kept here:
+    the same stiffness)."""
     elements = []
-    for i in range(8):
-        for j in range(2):
-            corners = [node(i, j), node(i + 1, j), node(i + 1, j + 1), node(i, j + 1)]
-            nodes.append((sum(NODES[k][0] for k in corners) / 4, sum(NODES[k][1] for k in corners) / 4))
-            centre = len(nodes) - 1
-            elements += [[corners[k], corners[(k + 1) % 4], centre] for k in range(4)]
-    return elements, nodes
+    for i in range(nx - 1):
+        for j in range(ny - 1):
+            corners = [at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]
+            nodes.append(tuple(sum(nodes[k][r] for k in corners) / 4 for r in range(2)))
+            elements += [[corners[k], corners[(k + 1) % 4], len(nodes) - 1] for k in range(4)]
+    return elements
+
+
+def cst_triangles(diagonal):
+    """The 27 nodes' 16 squares, each cut into two CSTs along a diagonal
+    (0: /, 1: \\, 2: alternating)."""
+    return split_rectangles(9, 3, node, diagonal)
+
+
+def csq_mesh():
+    """The 16 squares as constant-strain quadrilaterals."""
+    nodes = list(NODES)
+    return quadrilaterals_of_four(nodes, 9, 3, node), nodes
 
 
 def thesis_cantilever(strain=True):
@@ -296,18 +308,8 @@ def grid_cantilever(nx, ny, kind="CST", strain=True, diagonal=0):
     def at(i, j):
         return ny * i + j
     nodes = [(L * i / (nx - 1), -C + 2 * C * j / (ny - 1)) for i in range(nx) for j in range(ny)]
-    elements = []
-    for i in range(nx - 1):
-        for j in range(ny - 1):
-            a, b, c, d = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
-            if kind == "CSQ":
-                nodes.append(tuple(sum(nodes[k][r] for k in (a, b, c, d)) / 4 for r in range(2)))
-                corners = [a, b, c, d]
-                elements += [[corners[k], corners[(k + 1) % 4], len(nodes) - 1] for k in range(4)]
-            elif (diagonal if diagonal < 2 else (i + j) % 2) == 0:
-                elements += [[a, b, c], [a, c, d]]
-            else:
-                elements += [[a, b, d], [b, c, d]]
+    elements = (quadrilaterals_of_four(nodes, nx, ny, at) if kind == "CSQ"
+                else split_rectangles(nx, ny, at, diagonal))
     forces = [0.0] * (2 * len(nodes))
     inertia = 2 * C ** 3 / 3
     for j in range(ny - 1):
@@ -366,20 +368,12 @@ def lithostatic_column_cst(diagonal=1, fixed_base=False, n=3):
     nu/(1-nu) sigma_yy; the exact stress is linear, so this is also the
     triangle's mean), with the maxima over the triangles."""
     young, nu, rho, g, h = 9e10, 0.25, 2800.0, 9.81, 1e4
-    f = young / ((1 + nu) * (1 - 2 * nu))
-    D = [[f * (1 - nu), f * nu, 0], [f * nu, f * (1 - nu), 0], [0, 0, f * (1 - 2 * nu) / 2]]
+    D = elasticity(True, young, nu)
 
     def at(i, j):
         return n * i + j
     nodes = [(h * i / (n - 1), -h + h * j / (n - 1)) for i in range(n) for j in range(n)]
-    elements = []
-    for i in range(n - 1):
-        for j in range(n - 1):
-            a, b, c, d = at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)
-            if (diagonal if diagonal < 2 else (i + j) % 2) == 0:
-                elements += [[a, b, c], [a, c, d]]
-            else:
-                elements += [[a, b, d], [b, c, d]]
+    elements = split_rectangles(n, n, at, diagonal)
     forces = [0.0] * (2 * len(nodes))
     for element in elements:
         area = linear_triangle([nodes[a] for a in element], D)[2]
