@@ -15,6 +15,7 @@
 #include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/rigid_body_modes.h>
 #include <lithostress/solvers/sparse_cholesky.h>
+#include <lithostress/solvers/two_field_multigrid.h>
 
 #include <cmath>
 #include <iomanip>
@@ -106,7 +107,7 @@ namespace lithostress
                       "tolerance; so is every step with 0.");
     prm.declare_entry("Linear solver",
                       "automatic",
-                      Patterns::Selection("automatic|AMG|direct"),
+                      Patterns::Selection("automatic|AMG|direct|multigrid"),
                       "The preconditioner of each sliding step's Krylov "
                       "solve (CG in exact contact, GMRES with the normal "
                       "spring): AMG = the elasticity AMG with the rigid "
@@ -118,6 +119,9 @@ namespace lithostress
                       "first solve's have taken longer than making it "
                       "(the later steps' tangents differ only at the "
                       "fault) and across the time steps of one step size; "
+                      "multigrid = a geometric multigrid V-cycle on the two "
+                      "fields with Galerkin coarse operators (exact contact, "
+                      "one rank); "
                       "automatic = direct on one rank up to Direct solver "
                       "limit DoFs, AMG otherwise.");
     prm.declare_entry("Direct solver limit",
@@ -154,7 +158,9 @@ namespace lithostress
     const std::string solver    = prm.get("Linear solver");
     parameters.preconditioner   = solver == "direct" ? Preconditioner::direct
                                   : solver == "AMG"  ? Preconditioner::amg
-                                                    : Preconditioner::automatic;
+                                  : solver == "multigrid"
+                                    ? Preconditioner::multigrid
+                                    : Preconditioner::automatic;
     parameters.direct_limit     = prm.get_double("Direct solver limit");
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
@@ -243,6 +249,7 @@ namespace lithostress
     SolverControl factorization_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> factorization;
     std::unique_ptr<SparseCholesky>                 cholesky;
+    std::unique_ptr<TwoFieldMultigrid<dim>>         multigrid;
     /** The last converged Newton solution, where the next solve starts
      * (empty: none yet). */
     TrilinosWrappers::MPI::Vector solution;
@@ -353,7 +360,9 @@ namespace lithostress
       double
       preconditioner_memory() const
       {
-        return cholesky ? cholesky->memory_consumption() : 0.;
+        return cholesky    ? cholesky->memory_consumption()
+               : multigrid ? multigrid->memory_consumption()
+                           : 0.;
       }
 
       /** rhs := bulk_rhs, ready for additions on every rank. */
@@ -466,6 +475,8 @@ namespace lithostress
        * the Linear solver tolerance (inexact Newton). */
       bool   direct  = false;
       double forcing = 0;
+      /** Whether they are preconditioned by TwoFieldMultigrid. */
+      bool use_multigrid = false;
       /** The iterations of the last Krylov solve. */
       unsigned int last_iterations = 0;
       /** Wall time [s] of assembly, preconditioner set-up, Krylov solves
@@ -501,7 +512,8 @@ namespace lithostress
       SolverControl &factorization_control  = kept.factorization_control;
       std::unique_ptr<TrilinosWrappers::SolverDirect> &factorization =
         kept.factorization;
-      std::unique_ptr<SparseCholesky> &cholesky = kept.cholesky;
+      std::unique_ptr<SparseCholesky>         &cholesky  = kept.cholesky;
+      std::unique_ptr<TwoFieldMultigrid<dim>> &multigrid = kept.multigrid;
 
       /** The preconditioner of the linearised system: the factorisation
        * or the AMG, built afresh if it is not current. */
@@ -605,6 +617,11 @@ namespace lithostress
                (settings.preconditioner == Preconditioner::automatic &&
                 Utilities::MPI::n_mpi_processes(communicator) == 1 &&
                 dof_handler.n_dofs() <= settings.direct_limit);
+      use_multigrid = settings.preconditioner == Preconditioner::multigrid;
+      if (use_multigrid && !TwoFieldMultigrid<dim>::applies_to(dof_handler))
+        throw_input_error("Faults/Sliding solver/Linear solver",
+                          "multigrid runs on one rank; use AMG or automatic "
+                          "on several");
       assembled_tangents.resize(n_points);
     }
 
@@ -783,6 +800,7 @@ namespace lithostress
       // right-hand side the whole affine part (and the whole tangent's
       // share of the constraints' inhomogeneities).
       typename FaultInterface<dim>::FaceTerms terms(fe_space), change(fe_space);
+      bool                                    tangent_changed = false;
       faults.for_each_interface_point(
         dof_handler, fe_space, &u_ghost, [&](const PointValues &values) {
           Tensor<1, dim> t;
@@ -790,6 +808,8 @@ namespace lithostress
           law(values, t, D);
           terms.add_tangent(values, D);
           terms.add_affine(values, t - D * values.jump);
+          tangent_changed =
+            tangent_changed || D != assembled_tangents[values.index];
           change.add_tangent(values, D - assembled_tangents[values.index]);
           assembled_tangents[values.index] = D;
           if (!values.last_of_pair)
@@ -807,6 +827,11 @@ namespace lithostress
       matrix.compress(VectorOperation::add);
       rhs.compress(VectorOperation::add);
       time_assembly += timer.wall_time();
+      // The multigrid's coarse levels are Galerkin products of the
+      // tangent: they follow every change of the points' states, as a
+      // kept factorisation's extra iterations would not (one rank).
+      if (use_multigrid && tangent_changed)
+        preconditioner_current = false;
       if (!preconditioner_current)
         set_up_preconditioner();
     }
@@ -816,7 +841,18 @@ namespace lithostress
     SlidingContext<dim>::set_up_preconditioner()
     {
       Timer timer;
-      if (direct)
+      if (use_multigrid)
+        {
+          if (!multigrid)
+            {
+              multigrid = std::make_unique<TwoFieldMultigrid<dim>>();
+              multigrid->make_hierarchy(dof_handler, fe_space.fe_collection());
+            }
+          multigrid->initialize(matrix,
+                                active_constraints(),
+                                typename TwoFieldMultigrid<dim>::Settings());
+        }
+      else if (direct)
         {
           // Exact contact's tangent is symmetric: on one rank its
           // Cholesky factor, else an LU factorisation (Amesos KLU).
@@ -934,7 +970,9 @@ namespace lithostress
             exc,
             communicator,
             std::string(contact ? "CG" : "GMRES") + " with " +
-              (direct ? "a factorisation" : "AMG"),
+              (use_multigrid ? "multigrid"
+               : direct      ? "a factorisation"
+                             : "AMG"),
             rhs.l2_norm(),
             "raise Faults/Sliding solver/Linear solver tolerance");
         }
@@ -952,7 +990,11 @@ namespace lithostress
         std::max(settings.linear_tolerance * rhs.l2_norm(), forcing);
       using CG    = SolverCG<TrilinosWrappers::MPI::Vector>;
       using GMRES = SolverGMRES<TrilinosWrappers::MPI::Vector>;
-      if (cholesky)
+      if (use_multigrid && contact)
+        krylov_solve<CG>(x, target, *multigrid, 5000, false);
+      else if (use_multigrid)
+        krylov_solve<GMRES>(x, target, *multigrid, 5000, false);
+      else if (cholesky)
         krylov_solve<CG>(x, target, *cholesky, 5000, false);
       else if (direct)
         {

@@ -64,13 +64,15 @@ namespace lithostress
     };
 
     /** The preconditioner of the sliding steps' Krylov solves: the
-     * elasticity AMG, or a sparse factorisation of the tangent kept while
-     * it pays (Cholesky in exact contact on one rank, else Amesos KLU). */
+     * elasticity AMG, a sparse factorisation of the tangent kept while
+     * it pays (Cholesky in exact contact on one rank, else Amesos KLU), or
+     * the geometric multigrid of the two fields (TwoFieldMultigrid). */
     enum class Preconditioner
     {
       automatic,
       amg,
-      direct
+      direct,
+      multigrid
     };
 
     /** The `Faults/Sliding solver` entries (thesis §5.5's convergence

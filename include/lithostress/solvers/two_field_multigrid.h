@@ -1,0 +1,153 @@
+#ifndef lithostress_solvers_two_field_multigrid_h
+#define lithostress_solvers_two_field_multigrid_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace lithostress
+{
+  using namespace dealii;
+
+  /**
+   * A geometric multigrid V-cycle for the assembled matrix of a faulted
+   * model: two displacement fields, each FE_Nothing on the other side of
+   * the faults (doc/faults.md), the space deal.II's level DoFs and
+   * geometric transfers do not handle (hp DoF handlers).
+   *
+   * Level l is the finest mesh truncated at refinement level l (a cell
+   * is active on it if it has level l or is an active cell of a lower
+   * level), with the same two fields, so that a coarse function of either side
+   * is a fine function of the same side: the spaces are nested across the fault
+   * as well. The prolongation P_l is the coarse cells' interpolation,
+   * continuous through each level's hanging-node constraints and onto the fine
+   * level's unconstrained DoFs. The level operators are Galerkin
+   * products A_l = P_lᵀ A_{l+1} P_l of the finest matrix, so that every
+   * coarse level carries the fault's state as the fine tangent has it:
+   * sliding, stuck, open, and exact contact's ties, which the condensed
+   * fine matrix has eliminated. Without the stiff normal springs of the
+   * thesis's law (exact contact) the matrix has no stiff pairs, and
+   * Chebyshev smoothing on the diagonal damps the oscillatory error as on
+   * an unfaulted body; the coarsest mesh is solved by UMFPACK.
+   *
+   * One rank (the transfer is built from cells that are all local).
+   */
+  template <int dim>
+  class TwoFieldMultigrid
+  {
+  public:
+    /** Smoother of every level but the coarsest. */
+    struct Settings
+    {
+      unsigned int smoother_degree = 4;
+      double       smoothing_range = 20;
+    };
+
+    /** Whether it can be built for @p dof_handler (one rank). */
+    static bool
+    applies_to(const DoFHandler<dim> &dof_handler);
+
+    /**
+     * Builds the levels of @p dof_handler's mesh, each
+     * coarser level's DoFs with the field (active FE index) of the cells
+     * it covers, and the prolongations between the coarser levels. Kept
+     * while the mesh is; the finest prolongation depends on the
+     * constraints and is completed by initialize().
+     */
+    void
+    make_hierarchy(const DoFHandler<dim>       &dof_handler,
+                   const hp::FECollection<dim> &fe);
+
+    /**
+     * The level operators from @p matrix, the finest level's condensed
+     * with @p constraints, their smoothers and the coarsest level's
+     * factorisation.
+     */
+    void
+    initialize(const TrilinosWrappers::SparseMatrix &matrix,
+               const AffineConstraints<double>      &constraints,
+               const Settings                       &settings);
+
+    /** One V-cycle from a zero guess: @p dst ≈ A⁻¹ @p src. Symmetric, so
+     * that it preconditions CG. */
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const;
+
+    /** Number of levels, the finest included. */
+    unsigned int
+    n_levels() const
+    {
+      return level_dofs.size();
+    }
+
+    /** Bytes of the level matrices, prolongations and the coarse
+     * factorisation (not the finest matrix, which is the caller's). */
+    std::size_t
+    memory_consumption() const;
+
+  private:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    /** Point Jacobi: the inverse diagonal (0 on a zero row). deal.II's
+     * DiagonalMatrix is serial-only inside PreconditionChebyshev. */
+    struct InverseDiagonal
+    {
+      Vector inverse;
+      void
+      vmult(Vector &dst, const Vector &src) const
+      {
+        dst = src;
+        dst.scale(inverse);
+      }
+    };
+
+    using Smoother  = PreconditionChebyshev<TrilinosWrappers::SparseMatrix,
+                                           Vector,
+                                           InverseDiagonal>;
+    using Matrix    = TrilinosWrappers::SparseMatrix;
+    using Transfers = std::vector<std::vector<std::pair<unsigned int, double>>>;
+
+    /** The prolongation from level @p level - 1 to @p level as rows
+     * (fine DoF) of (coarse DoF, weight), through the coarser level's
+     * hanging-node constraints. */
+    Transfers
+    interpolation_rows(const unsigned int level) const;
+
+    /** The matrix of @p rows, without the rows of DoFs in
+     * @p fine_constraints. */
+    void
+    make_prolongation(const unsigned int               level,
+                      const Transfers                 &rows,
+                      const AffineConstraints<double> *fine_constraints);
+
+    void
+    v_cycle(const unsigned int level, Vector &x, const Vector &b) const;
+
+    std::vector<std::unique_ptr<Triangulation<dim>>> triangulations;
+    std::vector<std::unique_ptr<DoFHandler<dim>>>    coarser_dofs;
+    std::vector<const DoFHandler<dim> *>             level_dofs;
+    std::vector<AffineConstraints<double>>           hanging_nodes;
+    /** The finest prolongation's rows before the constraints. */
+    Transfers finest_rows;
+    /** prolongations[l]: level l - 1 to level l (l ≥ 1). */
+    std::vector<std::unique_ptr<Matrix>> prolongations;
+    /** level_matrices[l], l below the finest (the caller's matrix). */
+    std::vector<std::unique_ptr<Matrix>>   level_matrices;
+    const Matrix                          *finest_matrix = nullptr;
+    std::vector<std::unique_ptr<Smoother>> smoothers;
+    SparsityPattern                        coarse_pattern;
+    SparseMatrix<double>                   coarse_matrix;
+    SparseDirectUMFPACK                    coarse_solver;
+    mutable std::vector<Vector>            residuals, corrections, coarse_rhs;
+  };
+} // namespace lithostress
+
+#endif
