@@ -120,10 +120,10 @@ namespace lithostress
                       "(the later steps' tangents differ only at the "
                       "fault) and across the time steps of one step size; "
                       "multigrid = a geometric multigrid V-cycle on the two "
-                      "fields with Galerkin coarse operators (exact contact, "
-                      "one rank); "
+                      "fields with Galerkin coarse operators (exact contact); "
                       "automatic = direct on one rank up to Direct solver "
-                      "limit DoFs, AMG otherwise.");
+                      "limit DoFs, else multigrid in exact contact and AMG "
+                      "with the normal spring.");
     prm.declare_entry("Direct solver limit",
                       "2e6",
                       Patterns::Double(0),
@@ -617,11 +617,13 @@ namespace lithostress
                (settings.preconditioner == Preconditioner::automatic &&
                 Utilities::MPI::n_mpi_processes(communicator) == 1 &&
                 dof_handler.n_dofs() <= settings.direct_limit);
-      use_multigrid = settings.preconditioner == Preconditioner::multigrid;
-      if (use_multigrid && !TwoFieldMultigrid<dim>::applies_to(dof_handler))
-        throw_input_error("Faults/Sliding solver/Linear solver",
-                          "multigrid runs on one rank; use AMG or automatic "
-                          "on several");
+      // The two fields' multigrid where no factorisation is taken, in
+      // exact contact (the spring's stiff pairs need the ILU smoothing):
+      // on 2 ranks the thrust fault at 106 k DoFs took 7.5 s with it
+      // (206 CG iterations) against 15.7 s with the AMG (1 138).
+      use_multigrid = settings.preconditioner == Preconditioner::multigrid ||
+                      (settings.preconditioner == Preconditioner::automatic &&
+                       !direct && contact);
       assembled_tangents.resize(n_points);
     }
 
@@ -829,8 +831,9 @@ namespace lithostress
       time_assembly += timer.wall_time();
       // The multigrid's coarse levels are Galerkin products of the
       // tangent: they follow every change of the points' states, as a
-      // kept factorisation's extra iterations would not (one rank).
-      if (use_multigrid && tangent_changed)
+      // kept factorisation's extra iterations would not.
+      if (use_multigrid &&
+          Utilities::MPI::logical_or(tangent_changed, communicator))
         preconditioner_current = false;
       if (!preconditioner_current)
         set_up_preconditioner();

@@ -5,23 +5,29 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
 #include <lithostress/solvers/two_field_multigrid.h>
 
 #include <cmath>
 #include <functional>
+#include <set>
+#include <string>
+#include <tuple>
 
 namespace lithostress
 {
   namespace
   {
     /**
-     * Calls @p visit(coarse, fine, child) for each active cell @p fine of
-     * @p fine_dofs with the active cell @p coarse of @p coarse_dofs that
-     * contains it, @p coarse being @p fine (child = invalid) or its parent
-     * (fine is its child @p child). The two meshes have the same coarse
-     * cells in the same order, @p fine_dofs' refined at most once more.
+     * Calls @p visit(coarse, fine, child) for each locally owned active
+     * cell @p fine of @p fine_dofs with the active cell @p coarse of
+     * @p coarse_dofs that contains it, @p coarse being @p fine (child =
+     * invalid) or its parent (fine is its child @p child). The two meshes
+     * have the same coarse cells in the same order, @p fine_dofs' refined
+     * at most once more; @p coarse_dofs is a whole mesh, @p fine_dofs may
+     * be distributed (its artificial cells are skipped).
      */
     template <int dim, typename Visitor>
     void
@@ -34,18 +40,21 @@ namespace lithostress
         [&](const Cell &coarse, const Cell &fine) {
           if (coarse->has_children())
             {
-              for (unsigned int k = 0; k < coarse->n_children(); ++k)
-                descend(coarse->child(k), fine->child(k));
+              if (fine->has_children())
+                for (unsigned int k = 0; k < coarse->n_children(); ++k)
+                  descend(coarse->child(k), fine->child(k));
               return;
             }
           if (!fine->has_children())
-            visit(coarse, fine, numbers::invalid_unsigned_int);
-          else
-            for (unsigned int k = 0; k < fine->n_children(); ++k)
-              {
-                AssertThrow(fine->child(k)->is_active(), ExcInternalError());
-                visit(coarse, fine->child(k), k);
-              }
+            {
+              if (fine->is_locally_owned())
+                visit(coarse, fine, numbers::invalid_unsigned_int);
+              return;
+            }
+          for (unsigned int k = 0; k < fine->n_children(); ++k)
+            if (fine->child(k)->is_active() &&
+                fine->child(k)->is_locally_owned())
+              visit(coarse, fine->child(k), k);
         };
       Cell fine = fine_dofs.begin(0);
       for (Cell coarse = coarse_dofs.begin(0); coarse != coarse_dofs.end(0);
@@ -53,17 +62,66 @@ namespace lithostress
         descend(coarse, fine);
     }
 
+    /** A cell's place in the hierarchy: its coarse cell's index and the
+     * child indices down to it. */
+    template <int dim>
+    unsigned int
+    coarse_index(const Triangulation<dim> &tria, const CellId &id)
+    {
+      return tria
+        .create_cell_iterator(
+          CellId(id.get_coarse_cell_id(), std::vector<std::uint8_t>()))
+        ->index();
+    }
+
+    template <int dim>
+    std::string
+    path_of(const Triangulation<dim> &tria, const CellId &id)
+    {
+      std::string path = std::to_string(coarse_index(tria, id)) + ":";
+      for (const std::uint8_t child : id.get_child_indices())
+        path += char('0' + child);
+      return path;
+    }
+
+    /** The paths of every refined cell of the (possibly distributed)
+     * mesh @p fine, gathered from all ranks: the ancestors of the locally
+     * owned active cells. */
+    template <int dim>
+    std::set<std::string>
+    refined_cells(const Triangulation<dim> &fine)
+    {
+      std::set<std::string> mine;
+      for (const auto &cell : fine.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const std::string path = path_of(fine, cell->id());
+            for (std::size_t end = path.find(':') + 1; end < path.size(); ++end)
+              mine.insert(path.substr(0, end));
+          }
+      std::set<std::string> all;
+      for (const auto &part :
+           Utilities::MPI::all_gather(fine.get_communicator(),
+                                      std::vector<std::string>(mine.begin(),
+                                                               mine.end())))
+        all.insert(part.begin(), part.end());
+      return all;
+    }
+
     /**
-     * Level @p level of the mesh hierarchy of @p fine: its coarse cells
-     * (no manifolds: the transfer is topological) refined wherever @p fine
-     * is, up to level @p level, so that a cell is active on it if it has
-     * that level or is an active cell of @p fine of a lower one. Built
-     * here rather than by deal.II's coarsening sequence, whose copy of the
-     * triangulation fails on a refined TransfiniteInterpolationManifold.
+     * Level @p level of the hierarchy of @p fine, whole on every rank:
+     * its coarse cells (no manifolds: the transfer is topological)
+     * refined where @p refined says, up to level @p level, so that a cell
+     * is active on it if it has that level or is an active cell of a lower
+     * one. Built here rather than by deal.II's coarsening sequence, whose
+     * copy of the triangulation fails on a refined
+     * TransfiniteInterpolationManifold (the subduction zone's).
      */
     template <int dim>
     std::unique_ptr<Triangulation<dim>>
-    truncated_mesh(const Triangulation<dim> &fine, const unsigned int level)
+    truncated_mesh(const Triangulation<dim>    &fine,
+                   const std::set<std::string> &refined,
+                   const unsigned int           level)
     {
       std::vector<Point<dim>>    vertices = fine.get_vertices();
       std::vector<CellData<dim>> cells;
@@ -79,68 +137,71 @@ namespace lithostress
       GridTools::delete_unused_vertices(vertices, cells, no_boundary);
       auto mesh = std::make_unique<Triangulation<dim>>();
       mesh->create_triangulation(vertices, cells, no_boundary);
-      using Cell = typename Triangulation<dim>::cell_iterator;
       for (unsigned int k = 0; k < level; ++k)
         {
-          const std::function<void(const Cell &, const Cell &)> flag =
-            [&](const Cell &mine, const Cell &theirs) {
-              if (mine->has_children())
-                for (unsigned int c = 0; c < mine->n_children(); ++c)
-                  flag(mine->child(c), theirs->child(c));
-              else if (theirs->has_children() && mine->level() == int(k))
-                mine->set_refine_flag();
-            };
-          Cell theirs = fine.begin(0);
-          for (Cell mine = mesh->begin(0); mine != mesh->end(0);
-               ++mine, ++theirs)
-            flag(mine, theirs);
+          for (const auto &cell : mesh->active_cell_iterators_on_level(k))
+            if (refined.count(path_of(*mesh, cell->id())) != 0)
+              cell->set_refine_flag();
           mesh->execute_coarsening_and_refinement();
         }
       return mesh;
     }
-  } // namespace
 
-  template <int dim>
-  bool
-  TwoFieldMultigrid<dim>::applies_to(const DoFHandler<dim> &dof_handler)
-  {
-    return Utilities::MPI::n_mpi_processes(dof_handler.get_communicator()) == 1;
-  }
+    /** The displacement field (active FE index) of each coarse cell of
+     * @p dof_handler's mesh, from every rank. */
+    template <int dim>
+    std::vector<unsigned int>
+    coarse_cell_fields(const DoFHandler<dim> &dof_handler)
+    {
+      const Triangulation<dim> &tria = dof_handler.get_triangulation();
+      std::vector<unsigned int> fields(tria.n_cells(0), 0);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          fields[coarse_index(tria, cell->id())] = cell->active_fe_index();
+      Utilities::MPI::max(fields, dof_handler.get_communicator(), fields);
+      return fields;
+    }
+  } // namespace
 
   template <int dim>
   void
   TwoFieldMultigrid<dim>::make_hierarchy(const DoFHandler<dim> &dof_handler,
                                          const hp::FECollection<dim> &fe)
   {
-    AssertThrow(applies_to(dof_handler), ExcNotImplemented());
-    const Triangulation<dim> &tria = dof_handler.get_triangulation();
-    const unsigned int        n    = tria.n_global_levels();
+    const Triangulation<dim>       &tria    = dof_handler.get_triangulation();
+    const MPI_Comm                  comm    = dof_handler.get_communicator();
+    const unsigned int              n       = tria.n_global_levels();
+    const std::set<std::string>     refined = refined_cells(tria);
+    const std::vector<unsigned int> fields  = coarse_cell_fields(dof_handler);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
     triangulations.clear();
     coarser_dofs.clear();
     coarser_dofs.resize(n - 1);
     level_dofs.assign(n, nullptr);
     level_dofs[n - 1] = &dof_handler;
-    for (unsigned int level = n - 1; level-- > 0;)
-      {
-        triangulations.push_back(truncated_mesh(tria, level));
-        auto dofs = std::make_unique<DoFHandler<dim>>(*triangulations.back());
-        for_each_cell_pair(*dofs,
-                           *level_dofs[level + 1],
-                           [](const auto &coarse, const auto &fine, auto) {
-                             coarse->set_active_fe_index(
-                               fine->active_fe_index());
-                           });
-        dofs->distribute_dofs(fe);
-        level_dofs[level]   = dofs.get();
-        coarser_dofs[level] = std::move(dofs);
-      }
+    owned.assign(n, IndexSet());
+    owned[n - 1] = dof_handler.locally_owned_dofs();
     hanging_nodes.clear();
     hanging_nodes.resize(n);
     for (unsigned int level = 0; level + 1 < n; ++level)
       {
-        DoFTools::make_hanging_node_constraints(*level_dofs[level],
-                                                hanging_nodes[level]);
+        triangulations.push_back(truncated_mesh(tria, refined, level));
+        const Triangulation<dim> &mesh = *triangulations.back();
+        auto dofs = std::make_unique<DoFHandler<dim>>(mesh);
+        for (const auto &cell : dofs->active_cell_iterators())
+          cell->set_active_fe_index(fields[coarse_index(mesh, cell->id())]);
+        dofs->distribute_dofs(fe);
+        // The coarser levels are whole on every rank; each rank owns a
+        // contiguous range of their DoFs in the level operators.
+        const types::global_dof_index size = dofs->n_dofs();
+        owned[level].set_size(size);
+        owned[level].add_range(size * rank / n_ranks,
+                               size * (rank + 1) / n_ranks);
+        DoFTools::make_hanging_node_constraints(*dofs, hanging_nodes[level]);
         hanging_nodes[level].close();
+        level_dofs[level]   = dofs.get();
+        coarser_dofs[level] = std::move(dofs);
       }
     prolongations.clear();
     prolongations.resize(n);
@@ -158,8 +219,9 @@ namespace lithostress
     const DoFHandler<dim>           &fine           = *level_dofs[level];
     const DoFHandler<dim>           &coarse         = *level_dofs[level - 1];
     const AffineConstraints<double> &coarse_hanging = hanging_nodes[level - 1];
-    Transfers                        rows(fine.n_dofs());
-    std::vector<bool>                done(fine.n_dofs(), false);
+    const IndexSet                  &mine           = owned[level];
+    Transfers                        rows(mine.n_elements());
+    std::vector<bool>                done(mine.n_elements(), false);
     std::vector<types::global_dof_index> fine_indices, coarse_indices;
     FullMatrix<double>                   identity;
     for_each_cell_pair(
@@ -187,10 +249,13 @@ namespace lithostress
                    child, RefinementCase<dim>::isotropic_refinement);
         for (unsigned int i = 0; i < fine_indices.size(); ++i)
           {
-            if (done[fine_indices[i]])
+            if (!mine.is_element(fine_indices[i]))
               continue;
-            done[fine_indices[i]] = true;
-            auto &row             = rows[fine_indices[i]];
+            const auto position = mine.index_within_set(fine_indices[i]);
+            if (done[position])
+              continue;
+            done[position] = true;
+            auto &row      = rows[position];
             for (unsigned int j = 0; j < coarse_indices.size(); ++j)
               {
                 const double w = weights(i, j);
@@ -216,25 +281,23 @@ namespace lithostress
     const Transfers                 &rows,
     const AffineConstraints<double> *fine_constraints)
   {
-    const types::global_dof_index n_fine   = level_dofs[level]->n_dofs();
-    const types::global_dof_index n_coarse = level_dofs[level - 1]->n_dofs();
-    DynamicSparsityPattern        pattern(n_fine, n_coarse);
-    const auto                    kept = [&](const types::global_dof_index i) {
+    const IndexSet                   &fine = owned[level];
+    TrilinosWrappers::SparsityPattern pattern(
+      fine, owned[level - 1], level_dofs.back()->get_communicator());
+    const auto kept = [&](const types::global_dof_index i) {
       return fine_constraints == nullptr ||
              !fine_constraints->is_constrained(i);
     };
-    for (types::global_dof_index i = 0; i < n_fine; ++i)
+    for (const auto i : fine)
       if (kept(i))
-        for (const auto &[j, w] : rows[i])
+        for (const auto &[j, w] : rows[fine.index_within_set(i)])
           pattern.add(i, j);
+    pattern.compress();
     auto matrix = std::make_unique<Matrix>();
-    matrix->reinit(complete_index_set(n_fine),
-                   complete_index_set(n_coarse),
-                   pattern,
-                   level_dofs[level]->get_communicator());
-    for (types::global_dof_index i = 0; i < n_fine; ++i)
+    matrix->reinit(pattern);
+    for (const auto i : fine)
       if (kept(i))
-        for (const auto &[j, w] : rows[i])
+        for (const auto &[j, w] : rows[fine.index_within_set(i)])
           matrix->add(i, j, w);
     matrix->compress(VectorOperation::add);
     prolongations[level] = std::move(matrix);
@@ -301,24 +364,31 @@ namespace lithostress
         smoothers[level]->initialize(a, data);
       }
 
-    const Matrix                 &coarsest = level_matrix(0);
-    const types::global_dof_index n0       = coarsest.m();
+    // The coarsest operator, gathered on every rank and factorised there.
+    const Matrix &coarsest = level_matrix(0);
+    std::vector<
+      std::tuple<types::global_dof_index, types::global_dof_index, double>>
+      entries;
+    for (const auto i : coarsest.locally_owned_range_indices())
+      for (auto entry = coarsest.begin(i); entry != coarsest.end(i); ++entry)
+        entries.emplace_back(i, entry->column(), entry->value());
+    const auto all_entries =
+      Utilities::MPI::all_gather(coarsest.get_mpi_communicator(), entries);
+    const types::global_dof_index n0 = coarsest.m();
     DynamicSparsityPattern        pattern(n0, n0);
     for (types::global_dof_index i = 0; i < n0; ++i)
-      {
-        pattern.add(i, i);
-        for (auto entry = coarsest.begin(i); entry != coarsest.end(i); ++entry)
-          pattern.add(i, entry->column());
-      }
+      pattern.add(i, i);
+    for (const auto &part : all_entries)
+      for (const auto &[i, j, value] : part)
+        pattern.add(i, j);
     coarse_pattern.copy_from(pattern);
     coarse_matrix.reinit(coarse_pattern);
+    for (const auto &part : all_entries)
+      for (const auto &[i, j, value] : part)
+        coarse_matrix.set(i, j, value);
     for (types::global_dof_index i = 0; i < n0; ++i)
-      {
-        for (auto entry = coarsest.begin(i); entry != coarsest.end(i); ++entry)
-          coarse_matrix.set(i, entry->column(), entry->value());
-        if (coarse_matrix.diag_element(i) == 0)
-          coarse_matrix.set(i, i, 1.);
-      }
+      if (coarse_matrix.diag_element(i) == 0)
+        coarse_matrix.set(i, i, 1.);
     coarse_solver.initialize(coarse_matrix);
   }
 
@@ -330,11 +400,16 @@ namespace lithostress
   {
     if (level == 0)
       {
+        std::vector<std::pair<types::global_dof_index, double>> mine;
+        for (const auto i : b.locally_owned_elements())
+          mine.emplace_back(i, b[i]);
         dealii::Vector<double> values(b.size());
-        for (types::global_dof_index i = 0; i < b.size(); ++i)
-          values[i] = b[i];
+        for (const auto &part :
+             Utilities::MPI::all_gather(b.get_mpi_communicator(), mine))
+          for (const auto &[i, value] : part)
+            values[i] = value;
         coarse_solver.solve(values);
-        for (types::global_dof_index i = 0; i < b.size(); ++i)
+        for (const auto i : x.locally_owned_elements())
           x[i] = values[i];
         x.compress(VectorOperation::insert);
         return;

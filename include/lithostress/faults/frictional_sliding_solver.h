@@ -101,7 +101,8 @@ namespace lithostress
       double linear_reduction = 1e-3;
       /** The preconditioner of each step's Krylov solve (`Linear
        * solver`); automatic: the factorisation on one rank up to
-       * direct_limit DoFs, the AMG above and on more ranks. */
+       * direct_limit DoFs, above and on more ranks the two fields'
+       * multigrid in exact contact, the AMG with the normal spring. */
       Preconditioner preconditioner = Preconditioner::automatic;
       double         direct_limit   = 2e6;
     };

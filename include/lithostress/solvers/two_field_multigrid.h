@@ -37,7 +37,11 @@ namespace lithostress
    * Chebyshev smoothing on the diagonal damps the oscillatory error as on
    * an unfaulted body; the coarsest mesh is solved by UMFPACK.
    *
-   * One rank (the transfer is built from cells that are all local).
+   * On several ranks the coarser levels' meshes and DoFs are whole on
+   * every rank (built from the refined cells of all ranks), their
+   * operators distributed in contiguous ranges, and the coarsest operator
+   * gathered and factorised on each rank; the finest prolongation's rows
+   * come from each rank's own cells.
    */
   template <int dim>
   class TwoFieldMultigrid
@@ -49,10 +53,6 @@ namespace lithostress
       unsigned int smoother_degree = 4;
       double       smoothing_range = 20;
     };
-
-    /** Whether it can be built for @p dof_handler (one rank). */
-    static bool
-    applies_to(const DoFHandler<dim> &dof_handler);
 
     /**
      * Builds the levels of @p dof_handler's mesh, each
@@ -135,6 +135,10 @@ namespace lithostress
     std::vector<std::unique_ptr<DoFHandler<dim>>>    coarser_dofs;
     std::vector<const DoFHandler<dim> *>             level_dofs;
     std::vector<AffineConstraints<double>>           hanging_nodes;
+    /** The DoFs of each level a rank owns in the level operators: the
+     * finest level's own, a contiguous range of each coarser one (whole
+     * on every rank). */
+    std::vector<IndexSet> owned;
     /** The finest prolongation's rows before the constraints. */
     Transfers finest_rows;
     /** prolongations[l]: level l - 1 to level l (l ≥ 1). */
