@@ -14,7 +14,6 @@
 #include <functional>
 #include <set>
 #include <string>
-#include <tuple>
 
 namespace lithostress
 {
@@ -145,6 +144,39 @@ namespace lithostress
           mesh->execute_coarsening_and_refinement();
         }
       return mesh;
+    }
+
+    /** One entry of a sparse matrix. */
+    struct MatrixEntry
+    {
+      types::global_dof_index row, column;
+      double                  value;
+    };
+
+    /** Every rank's @p mine, concatenated in rank order, on every rank
+     * (MPI_Allgatherv of the bytes: no serialisation). */
+    std::vector<MatrixEntry>
+    gather_on_all(const MPI_Comm comm, const std::vector<MatrixEntry> &mine)
+    {
+      if (Utilities::MPI::n_mpi_processes(comm) == 1)
+        return mine;
+      const int              bytes  = mine.size() * sizeof(MatrixEntry);
+      const std::vector<int> counts = Utilities::MPI::all_gather(comm, bytes);
+      std::vector<int>       offsets(counts.size(), 0);
+      for (unsigned int r = 1; r < counts.size(); ++r)
+        offsets[r] = offsets[r - 1] + counts[r - 1];
+      std::vector<MatrixEntry> all((offsets.back() + counts.back()) /
+                                   sizeof(MatrixEntry));
+      const int                error = MPI_Allgatherv(mine.data(),
+                                       bytes,
+                                       MPI_BYTE,
+                                       all.data(),
+                                       counts.data(),
+                                       offsets.data(),
+                                       MPI_BYTE,
+                                       comm);
+      AssertThrowMPI(error);
+      return all;
     }
 
     /** The displacement field (active FE index) of each coarse cell of
@@ -317,7 +349,22 @@ namespace lithostress
     smoothers.clear();
     finest_matrix = &matrix;
     if (n > 1)
-      make_prolongation(finest, finest_rows, &constraints);
+      {
+        // The finest prolongation leaves out the constrained DoFs: made
+        // again only when they change (exact contact's open set).
+        std::vector<types::global_dof_index> constrained;
+        for (const auto i : owned[finest])
+          if (constraints.is_constrained(i))
+            constrained.push_back(i);
+        // (Decided by all ranks together: making it is collective.)
+        if (Utilities::MPI::logical_or(!prolongations[finest] ||
+                                         constrained != finest_constrained,
+                                       matrix.get_mpi_communicator()))
+          {
+            make_prolongation(finest, finest_rows, &constraints);
+            finest_constrained = std::move(constrained);
+          }
+      }
     level_matrices.clear();
     level_matrices.resize(n);
     for (unsigned int level = finest; level > 0; --level)
@@ -365,27 +412,23 @@ namespace lithostress
       }
 
     // The coarsest operator, gathered on every rank and factorised there.
-    const Matrix &coarsest = level_matrix(0);
-    std::vector<
-      std::tuple<types::global_dof_index, types::global_dof_index, double>>
-      entries;
+    const Matrix            &coarsest = level_matrix(0);
+    std::vector<MatrixEntry> entries;
     for (const auto i : coarsest.locally_owned_range_indices())
       for (auto entry = coarsest.begin(i); entry != coarsest.end(i); ++entry)
-        entries.emplace_back(i, entry->column(), entry->value());
-    const auto all_entries =
-      Utilities::MPI::all_gather(coarsest.get_mpi_communicator(), entries);
+        entries.push_back({i, entry->column(), entry->value()});
+    const std::vector<MatrixEntry> all_entries =
+      gather_on_all(coarsest.get_mpi_communicator(), entries);
     const types::global_dof_index n0 = coarsest.m();
     DynamicSparsityPattern        pattern(n0, n0);
     for (types::global_dof_index i = 0; i < n0; ++i)
       pattern.add(i, i);
-    for (const auto &part : all_entries)
-      for (const auto &[i, j, value] : part)
-        pattern.add(i, j);
+    for (const auto &[i, j, value] : all_entries)
+      pattern.add(i, j);
     coarse_pattern.copy_from(pattern);
     coarse_matrix.reinit(coarse_pattern);
-    for (const auto &part : all_entries)
-      for (const auto &[i, j, value] : part)
-        coarse_matrix.set(i, j, value);
+    for (const auto &[i, j, value] : all_entries)
+      coarse_matrix.set(i, j, value);
     for (types::global_dof_index i = 0; i < n0; ++i)
       if (coarse_matrix.diag_element(i) == 0)
         coarse_matrix.set(i, i, 1.);
@@ -400,14 +443,14 @@ namespace lithostress
   {
     if (level == 0)
       {
-        std::vector<std::pair<types::global_dof_index, double>> mine;
+        // Each rank's entries into the whole vector (a sum over the ranks:
+        // no serialisation in the V-cycle).
+        dealii::Vector<double> &values = coarse_values;
+        values.reinit(b.size());
         for (const auto i : b.locally_owned_elements())
-          mine.emplace_back(i, b[i]);
-        dealii::Vector<double> values(b.size());
-        for (const auto &part :
-             Utilities::MPI::all_gather(b.get_mpi_communicator(), mine))
-          for (const auto &[i, value] : part)
-            values[i] = value;
+          values[i] = b[i];
+        if (Utilities::MPI::n_mpi_processes(b.get_mpi_communicator()) > 1)
+          Utilities::MPI::sum(values, b.get_mpi_communicator(), values);
         coarse_solver.solve(values);
         for (const auto i : x.locally_owned_elements())
           x[i] = values[i];

@@ -8,6 +8,7 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <memory>
 #include <vector>
@@ -141,6 +142,8 @@ namespace lithostress
     std::vector<IndexSet> owned;
     /** The finest prolongation's rows before the constraints. */
     Transfers finest_rows;
+    /** The finest level's constrained DoFs its prolongation leaves out. */
+    std::vector<types::global_dof_index> finest_constrained;
     /** prolongations[l]: level l - 1 to level l (l ≥ 1). */
     std::vector<std::unique_ptr<Matrix>> prolongations;
     /** level_matrices[l], l below the finest (the caller's matrix). */
@@ -150,7 +153,9 @@ namespace lithostress
     SparsityPattern                        coarse_pattern;
     SparseMatrix<double>                   coarse_matrix;
     SparseDirectUMFPACK                    coarse_solver;
-    mutable std::vector<Vector>            residuals, corrections, coarse_rhs;
+    /** The coarsest level's right-hand side and solution, whole. */
+    mutable dealii::Vector<double> coarse_values;
+    mutable std::vector<Vector>    residuals, corrections, coarse_rhs;
   };
 } // namespace lithostress
 
