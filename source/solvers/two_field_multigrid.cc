@@ -238,9 +238,7 @@ namespace lithostress
     prolongations.clear();
     prolongations.resize(n);
     for (unsigned int level = 1; level + 1 < n; ++level)
-      make_prolongation(level,
-                        interpolation_rows(level),
-                        &hanging_nodes[level]);
+      make_prolongation(level, interpolation_rows(level), hanging_nodes[level]);
     finest_rows = n > 1 ? interpolation_rows(n - 1) : Transfers();
   }
 
@@ -255,7 +253,6 @@ namespace lithostress
     Transfers                        rows(mine.n_elements());
     std::vector<bool>                done(mine.n_elements(), false);
     std::vector<types::global_dof_index> fine_indices, coarse_indices;
-    FullMatrix<double>                   identity;
     for_each_cell_pair(
       coarse,
       fine,
@@ -267,17 +264,12 @@ namespace lithostress
         coarse_indices.resize(element.n_dofs_per_cell());
         cell->get_dof_indices(fine_indices);
         coarse_cell->get_dof_indices(coarse_indices);
-        const bool same = child == numbers::invalid_unsigned_int;
-        if (same)
-          {
-            identity.reinit(element.n_dofs_per_cell(),
-                            element.n_dofs_per_cell());
-            for (unsigned int i = 0; i < identity.m(); ++i)
-              identity(i, i) = 1;
-          }
-        const FullMatrix<double> &weights =
-          same ? identity
-               : element.get_prolongation_matrix(
+        // The same cell on both levels: the identity; a child: the
+        // element's prolongation matrix.
+        const bool                same = child == numbers::invalid_unsigned_int;
+        const FullMatrix<double> *prolongation =
+          same ? nullptr
+               : &element.get_prolongation_matrix(
                    child, RefinementCase<dim>::isotropic_refinement);
         for (unsigned int i = 0; i < fine_indices.size(); ++i)
           {
@@ -290,7 +282,7 @@ namespace lithostress
             auto &row      = rows[position];
             for (unsigned int j = 0; j < coarse_indices.size(); ++j)
               {
-                const double w = weights(i, j);
+                const double w = same ? double(i == j) : (*prolongation)(i, j);
                 if (std::abs(w) < 1e-12)
                   continue;
                 const auto *line =
@@ -311,14 +303,13 @@ namespace lithostress
   TwoFieldMultigrid<dim>::make_prolongation(
     const unsigned int               level,
     const Transfers                 &rows,
-    const AffineConstraints<double> *fine_constraints)
+    const AffineConstraints<double> &fine_constraints)
   {
     const IndexSet                   &fine = owned[level];
     TrilinosWrappers::SparsityPattern pattern(
       fine, owned[level - 1], level_dofs.back()->get_communicator());
     const auto kept = [&](const types::global_dof_index i) {
-      return fine_constraints == nullptr ||
-             !fine_constraints->is_constrained(i);
+      return !fine_constraints.is_constrained(i);
     };
     for (const auto i : fine)
       if (kept(i))
@@ -361,7 +352,7 @@ namespace lithostress
                                          constrained != finest_constrained,
                                        matrix.get_mpi_communicator()))
           {
-            make_prolongation(finest, finest_rows, &constraints);
+            make_prolongation(finest, finest_rows, constraints);
             finest_constrained = std::move(constrained);
           }
       }
@@ -388,8 +379,11 @@ namespace lithostress
         const Matrix &a = level_matrix(level);
         residuals[level].reinit(a.locally_owned_range_indices(),
                                 a.get_mpi_communicator());
-        corrections[level].reinit(residuals[level]);
-        coarse_rhs[level].reinit(residuals[level]);
+        if (level < finest)
+          {
+            corrections[level].reinit(residuals[level]);
+            coarse_rhs[level].reinit(residuals[level]);
+          }
         if (level == 0)
           continue;
         // A DoF no coarse function reaches (a hanging node of a coarser

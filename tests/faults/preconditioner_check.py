@@ -8,8 +8,8 @@ prm/thrust_fault.prm, prm/listric_thrust_fault.prm, exact normal contact,
   tangent, kept while it pays (the first solve is a direct solve);
 * `AMG`: CG with the elasticity AMG (rigid modes of each block);
 * `multigrid`: CG with the geometric multigrid of the two fields
-  (TwoFieldMultigrid: Galerkin coarse operators on the coarsening
-  sequence of the mesh);
+  (TwoFieldMultigrid: Galerkin coarse operators on the mesh truncated
+  at each refinement level);
 * `automatic` on 2 ranks (the multigrid: the factorisation is serial),
   and `AMG` on 2 ranks.
 

@@ -110,14 +110,16 @@ namespace lithostress
       }
     };
 
-    using Smoother  = PreconditionChebyshev<TrilinosWrappers::SparseMatrix,
+    using Smoother = PreconditionChebyshev<TrilinosWrappers::SparseMatrix,
                                            Vector,
                                            InverseDiagonal>;
-    using Matrix    = TrilinosWrappers::SparseMatrix;
-    using Transfers = std::vector<std::vector<std::pair<unsigned int, double>>>;
+    using Matrix   = TrilinosWrappers::SparseMatrix;
+    using Transfers =
+      std::vector<std::vector<std::pair<types::global_dof_index, double>>>;
 
-    /** The prolongation from level @p level - 1 to @p level as rows
-     * (fine DoF) of (coarse DoF, weight), through the coarser level's
+    /** The prolongation from level @p level - 1 to @p level as rows of
+     * (coarse DoF, weight), one per DoF of @p level this rank owns (in
+     * the order of owned[level]), through the coarser level's
      * hanging-node constraints. */
     Transfers
     interpolation_rows(const unsigned int level) const;
@@ -127,7 +129,7 @@ namespace lithostress
     void
     make_prolongation(const unsigned int               level,
                       const Transfers                 &rows,
-                      const AffineConstraints<double> *fine_constraints);
+                      const AffineConstraints<double> &fine_constraints);
 
     void
     v_cycle(const unsigned int level, Vector &x, const Vector &b) const;
