@@ -44,7 +44,7 @@ cut to 1.3 x that and marked by black ticks across their ends (in the key:
 than 8 times as wide as high gets an overview panel plus a panel of a window
 8 heights wide around the largest stresses. Points closer than about 0.3 inch
 on the page are thinned to one per grid cell (the figure says so).
-fault.png: slip along the fault (s from its surface trace, points marked by
+fault.png: slip along the fault (s from its upper end, points marked by
 state: stuck, sliding, open) and, for a frictional fault, |tau|/tau_F with
 tau_F = mu max(0, -sigma_n,eff) (mu = Faults/<name>/Friction coefficient of
 parameters.prm): 1 where it slides; else the shear and normal tractions.
@@ -700,7 +700,7 @@ def plot_fault(directory, settings, name, path, png):
         bottom.plot(s, values["normal_traction"] / sscale, label="normal traction")
         bottom.set_ylabel("traction [%s] (tension +)" % sunit)
         bottom.legend(fontsize=8)
-    bottom.set_xlabel("s, distance along the fault from its surface trace [%s]" % unit)
+    bottom.set_xlabel("s, distance along the fault from its upper end [%s]" % unit)
     for ax in (top, bottom):
         ax.tick_params(labelsize=8)
     fig.tight_layout()

@@ -3,6 +3,8 @@
 
 #include <lithostress/faults/fault_interface.h>
 
+#include <cmath>
+
 // FaultInterface's interface quadrature and face terms: the one loop over
 // the faults' interface points (for_each_interface_point) and what the
 // elastic law assembles with it.
@@ -131,6 +133,12 @@ namespace lithostress
     point.depth            = trace.depth(point.position);
     point.overburden_depth = overburden_depth(fault, point.position);
     point.distance         = trace.distance_along(point.position);
+    // (Interface points lie at least half a cell apart.)
+    const double tolerance = 1e-3;
+    point.at_tip =
+      (trace.buried_top() && std::abs(point.distance) < tolerance) ||
+      (std::isfinite(trace.end_s) &&
+       std::abs(point.distance - (trace.end_s - trace.begin_s)) < tolerance);
     return point;
   }
 

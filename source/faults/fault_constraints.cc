@@ -4,6 +4,7 @@
 
 #include <lithostress/faults/fault_interface.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <set>
@@ -399,19 +400,25 @@ namespace lithostress
     const std::function<bool(const Fault &)> &which,
     const ContactState                       *contact) const
   {
-    bool any = false;
-    for (const Fault &fault : faults)
-      any = any || which(fault);
-    if (!any)
+    // The welded extensions beyond buried tips are tied first (with every
+    // law, and not in exact contact's call), so that a tip's node keeps
+    // a zero jump; then the faces of the faults @p which selects.
+    const bool welds =
+      contact == nullptr &&
+      std::any_of(faults.begin(), faults.end(), [](const Fault &fault) {
+        return fault.trace.buried_top() || std::isfinite(fault.trace.end_s);
+      });
+    if (!welds && std::none_of(faults.begin(), faults.end(), which))
       return;
     // The prescribed jump u(hanging wall) - u(footwall) of fault @p fault,
     // component d, at a node x of one of its faces whose normal into the
-    // hanging wall is n (zero for a locked fault).
+    // hanging wall is n (zero for a locked fault and on a weld).
     const auto jump = [&](const Fault          &fault,
+                          const bool            weld,
                           const Point<dim>     &x,
                           const Tensor<1, dim> &normal,
                           const unsigned int    d) {
-      if (fault.law != Law::prescribed_slip)
+      if (weld || fault.law != Law::prescribed_slip)
         return 0.0;
       const Point<1> s(fault.trace.distance_along(x));
       fault.slip->set_time(time);
@@ -436,52 +443,58 @@ namespace lithostress
       return trace.hanging_wall_normal(face->center(true)) * out > 0 ? 1. : -1.;
     };
     FaceNodeConstraints<dim> face_constraints(fe_space, constraints);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        if (cell->is_artificial())
-          continue;
-        const unsigned int side = cell->active_fe_index();
-        for (const unsigned int f : cell->face_indices())
-          {
-            if (cell->at_boundary(f))
-              continue;
-            const auto neighbor = cell->neighbor(f);
-            if (neighbor->has_children() || neighbor->is_artificial() ||
-                neighbor->active_fe_index() == side)
-              continue;
-            const int k = fault_of(cell, f);
-            if (k < 0 || !which(faults[k]))
-              continue;
-            const Fault &fault = faults[k];
-            face_constraints.normal_only(contact ? &fault.trace : nullptr,
-                                         contact ? *contact : ContactState());
-            // The jump of the fields, u(field 1) - u(field 0).
-            const double sign = field_1_sign(cell, f, fault.trace);
-            const auto   n =
-              fault.trace.hanging_wall_normal(cell->face(f)->center(true));
-            const auto field_jump = [&](const Point<dim>  &x,
-                                        const unsigned int d) {
-              return sign * jump(fault, x, n, d);
-            };
-            if (!cell->neighbor_is_coarser(f))
-              {
-                // Equal levels, seen from the field-0 side.
-                if (side == 0)
-                  face_constraints.equal_levels(cell, f, field_jump);
+    const auto               tie_pass = [&](const bool weld) {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        {
+          if (cell->is_artificial())
+            continue;
+          const unsigned int side = cell->active_fe_index();
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (cell->at_boundary(f))
                 continue;
-              }
-            // This cell is the finer side of a hanging fault face.
-            const auto [coarse_face_no, subface_no] =
-              cell->neighbor_of_coarser_neighbor(f);
-            const auto coarse_face = neighbor->face(coarse_face_no);
-            if (side == 1)
-              face_constraints.fine_field_1(
-                cell, f, coarse_face, subface_no, field_jump);
-            else
-              face_constraints.fine_field_0(
-                cell, f, coarse_face, subface_no, field_jump);
-          }
-      }
+              const auto neighbor = cell->neighbor(f);
+              if (neighbor->has_children() || neighbor->is_artificial() ||
+                  neighbor->active_fe_index() == side)
+                continue;
+              const int k = fault_of(cell, f);
+              if (k < 0 || welded(cell, f) != weld ||
+                  (!weld && !which(faults[k])))
+                continue;
+              const Fault &fault = faults[k];
+              face_constraints.normal_only(contact ? &fault.trace : nullptr,
+                                           contact ? *contact : ContactState());
+              // The jump of the fields, u(field 1) - u(field 0).
+              const double sign = field_1_sign(cell, f, fault.trace);
+              const auto   n =
+                fault.trace.hanging_wall_normal(cell->face(f)->center(true));
+              const auto field_jump = [&](const Point<dim>  &x,
+                                          const unsigned int d) {
+                return sign * jump(fault, weld, x, n, d);
+              };
+              if (!cell->neighbor_is_coarser(f))
+                {
+                  // Equal levels, seen from the field-0 side.
+                  if (side == 0)
+                    face_constraints.equal_levels(cell, f, field_jump);
+                  continue;
+                }
+              // This cell is the finer side of a hanging fault face.
+              const auto [coarse_face_no, subface_no] =
+                cell->neighbor_of_coarser_neighbor(f);
+              const auto coarse_face = neighbor->face(coarse_face_no);
+              if (side == 1)
+                face_constraints.fine_field_1(
+                  cell, f, coarse_face, subface_no, field_jump);
+              else
+                face_constraints.fine_field_0(
+                  cell, f, coarse_face, subface_no, field_jump);
+            }
+        }
+    };
+    if (welds)
+      tie_pass(true);
+    tie_pass(false);
   }
 
   template void

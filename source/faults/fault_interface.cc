@@ -45,13 +45,14 @@ namespace lithostress
                           "prescribed slip = the jump is Slip along the dip "
                           "plus Opening along the normal (kinematic, exact "
                           "constraints).");
-        prm.declare_entry("Slip",
-                          "0",
-                          Patterns::Anything(),
-                          "Prescribed slip: the slip [m] down the dip "
-                          "(positive = normal sense, hanging wall down) as a "
-                          "function of s, the distance along the fault from "
-                          "its surface trace [m], and t [s].");
+        prm.declare_entry(
+          "Slip",
+          "0",
+          Patterns::Anything(),
+          "Prescribed slip: the slip [m] down the dip "
+          "(positive = normal sense, hanging wall down) as a "
+          "function of s, the distance along the fault from "
+          "its upper end (the surface trace or a buried tip) [m], and t [s].");
         prm.declare_entry("Opening",
                           "0",
                           Patterns::Anything(),
@@ -107,8 +108,9 @@ namespace lithostress
           "fault top",
           Patterns::Selection("fault top|sea level"),
           "Where the depth of the lithostatic and pore pressures is "
-          "measured from: fault top = the fault's upper end (its trace on "
-          "the top surface); sea level = y = 0, as FSHEAR measures both "
+          "measured from: fault top = the upper end of the fault's trace "
+          "(on the top surface; above a buried tip, where its welded "
+          "extension meets the surface); sea level = y = 0, as FSHEAR measures both "
           "(thesis appendix: SLITH = 2911 g y and POREP = 1000 g y with y "
           "the coordinate below sea level), which adds the water depth "
           "above a submarine fault's trace to both.");

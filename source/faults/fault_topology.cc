@@ -23,6 +23,9 @@ namespace lithostress
     coarse_face_fault.assign(n_coarse, {});
     for (auto &faces : coarse_face_fault)
       faces.fill(-1);
+    coarse_face_welded.assign(n_coarse, {});
+    for (auto &faces : coarse_face_welded)
+      faces.fill(false);
     if (faults.empty())
       return;
     double size = 0;
@@ -54,7 +57,10 @@ namespace lithostress
                                     "> and <" + trace.name +
                                     "> run along the same cell faces");
               entry = k;
-              ++faces_on[k];
+              coarse_face_welded[cell->index()][f] =
+                !trace.on_fault_part(face->center(true), tolerance);
+              if (!coarse_face_welded[cell->index()][f])
+                ++faces_on[k];
               for (const unsigned int v : face->vertex_indices())
                 faults_at_vertex[face->vertex_index(v)].insert(k);
             }
@@ -63,7 +69,8 @@ namespace lithostress
       if (faces_on[k] == 0)
         throw_input_error("Faults/Names",
                           "no cell faces of the mesh lie on the fault <" +
-                            faults[k].trace.name + ">");
+                            faults[k].trace.name +
+                            "> (between its ends, if it has buried tips)");
 
     // Faults may share a vertex only on the boundary.
     std::set<unsigned int> boundary_vertices;
@@ -181,7 +188,7 @@ namespace lithostress
             if (cell->at_boundary(f))
               continue;
             const int k = fault_of(cell, f);
-            if (k < 0 || !has_face_terms(k))
+            if (k < 0 || !has_face_terms(k) || welded(cell, f))
               continue;
             const auto pair = [&](const auto &...arguments) {
               pair_of_fault(k, arguments...);

@@ -316,6 +316,8 @@ namespace lithostress
         const auto            &p   = values.point;
         const Tensor<1, dim>  &w   = values.jump;
         const CoulombFriction &law = faults.friction(p.fault);
+        if (p.at_tip)
+          return law.welded(w * p.shear, p_old);
         if (contact && contact->exact(values.index))
           return law.respond_in_contact(w * p.shear,
                                         contact->normal_traction(values.index),

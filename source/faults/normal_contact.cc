@@ -49,7 +49,7 @@ namespace lithostress
       dof_handler, fe_space, nullptr, [&](const PointValues &values) {
         const unsigned int k = values.point.fault;
         const bool exact = faults.exact_contact(k) && values.node_sign != 0 &&
-                           faults.has_face_terms(k);
+                           faults.has_face_terms(k) && !values.point.at_tip;
         in_contact.push_back(exact);
         slides.push_back(faults.friction(k).slides);
         keys.push_back(values.node[0]);

@@ -121,7 +121,7 @@ namespace lithostress
   }
 
   double
-  FaultTrace::distance_along(const Point<2> &p) const
+  FaultTrace::trace_distance(const Point<2> &p) const
   {
     if (!polyline.empty())
       return project(p).s;

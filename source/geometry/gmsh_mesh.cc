@@ -196,9 +196,11 @@ namespace lithostress
                       "",
                       Patterns::Anything(),
                       "Physical curves of the mesh that are faults (interior "
-                      "lines from boundary to boundary; MSH format 2): each "
-                      "becomes a fault of that name, with its interface law "
-                      "in `Faults`.");
+                      "lines; MSH format 2): each becomes a fault of that "
+                      "name, with its interface law in `Faults`. An end "
+                      "inside the mesh is a buried tip: the fault is "
+                      "continued to the boundary along the mesh's edges, "
+                      "as straight as they run, by a welded extension.");
     prm.declare_entry("Fault arc centres",
                       "",
                       Patterns::Anything(),
@@ -281,6 +283,7 @@ namespace lithostress
                                               "Geometry/Gmsh/Fault arc centres",
                                               scale)[0];
       }
+    read_file_cells();
     if (!faults.empty())
       read_fault_curves(centres);
 
@@ -304,8 +307,64 @@ namespace lithostress
         if (concentric_radii.empty())
           throw_input_error(entry, "gives no radius");
       }
-    read_file_cells();
   }
+
+  namespace
+  {
+    /** The nodes of the 2-node lines @p segments (over @p nodes) chained
+     * into one unbranched open line from its upper end (the left one if
+     * level) down; throws InputError naming @p what if they branch, close
+     * or refer to a missing node. */
+    std::vector<long>
+    chain_segments(const std::vector<std::pair<long, long>> &segments,
+                   const std::map<long, Point<2>>           &nodes,
+                   const std::string                        &what)
+    {
+      const std::string entry = "Geometry/Gmsh/Fault curves";
+      // Chain the segments: a single unbranched line from end to end.
+      std::map<long, std::vector<long>> next;
+      for (const auto &[a, b] : segments)
+        {
+          if (nodes.count(a) == 0 || nodes.count(b) == 0)
+            throw_input_error(entry, what + " refers to a missing node");
+          next[a].push_back(b);
+          next[b].push_back(a);
+        }
+      std::vector<long> ends;
+      for (const auto &[node, neighbours] : next)
+        {
+          if (neighbours.size() > 2)
+            throw_input_error(entry, what + " branches at a node");
+          if (neighbours.size() == 1)
+            ends.push_back(node);
+        }
+      if (ends.size() != 2)
+        throw_input_error(entry,
+                          what + " is not one open line (it is closed or "
+                                 "in pieces)");
+      // From the upper end (the left one if level) down.
+      const auto upper = [&](const long a, const long b) {
+        const Point<2> &p = nodes.at(a), &q = nodes.at(b);
+        return p[1] > q[1] || (p[1] == q[1] && p[0] < q[0]);
+      };
+      long              node     = upper(ends[0], ends[1]) ? ends[0] : ends[1];
+      long              previous = -1;
+      std::vector<long> chain    = {node};
+      while (true)
+        {
+          long following = -1;
+          for (const long n : next[node])
+            if (n != previous)
+              following = n;
+          if (following < 0)
+            break;
+          previous = node;
+          node     = following;
+          chain.push_back(node);
+        }
+      return chain;
+    }
+  } // namespace
 
   template <int dim>
   void
@@ -378,50 +437,30 @@ namespace lithostress
         const std::string what     = "the physical curve <" + fault.name + ">";
         if (segments.empty())
           throw_input_error(entry, what + " has no line elements");
-        // Chain the segments: a single unbranched line from end to end.
-        std::map<long, std::vector<long>> next;
-        for (const auto &[a, b] : segments)
-          {
-            if (nodes.count(a) == 0 || nodes.count(b) == 0)
-              throw_input_error(entry, what + " refers to a missing node");
-            next[a].push_back(b);
-            next[b].push_back(a);
-          }
-        std::vector<long> ends;
-        for (const auto &[node, neighbours] : next)
-          {
-            if (neighbours.size() > 2)
-              throw_input_error(entry, what + " branches at a node");
-            if (neighbours.size() == 1)
-              ends.push_back(node);
-          }
-        if (ends.size() != 2)
-          throw_input_error(entry,
-                            what + " is not one open line (it is closed or "
-                                   "in pieces)");
-        // From the upper end (the left one if level) down.
-        const auto upper = [&](const long a, const long b) {
-          const Point<2> &p = nodes[a], &q = nodes[b];
-          return p[1] > q[1] || (p[1] == q[1] && p[0] < q[0]);
-        };
-        long node     = upper(ends[0], ends[1]) ? ends[0] : ends[1];
-        long previous = -1;
-        std::vector<Point<2>> vertices = {nodes[node]};
-        while (true)
-          {
-            long following = -1;
-            for (const long n : next[node])
-              if (n != previous)
-                following = n;
-            if (following < 0)
-              break;
-            previous = node;
-            node     = following;
-            vertices.push_back(nodes[node]);
-          }
-        if (vertices.size() != segments.size() + 1)
+        const std::vector<long> chain = chain_segments(segments, nodes, what);
+        if (chain.size() != segments.size() + 1)
           throw_input_error(entry,
                             what + " is not one open line (it is in pieces)");
+        // Ends inside the mesh: welded extensions to the boundary.
+        std::set<long> avoid;
+        for (const auto &[tag, tag_segments] : lines)
+          for (const auto &[a, b] : tag_segments)
+            avoid.insert({a, b});
+        const std::vector<long>
+          up   = extension_to_boundary(chain, true, avoid, what),
+          down = extension_to_boundary(chain, false, avoid, what);
+        std::vector<Point<2>> vertices;
+        for (auto n = up.rbegin(); n != up.rend(); ++n)
+          vertices.push_back(nodes[*n]);
+        for (const long n : chain)
+          vertices.push_back(nodes[n]);
+        for (const long n : down)
+          vertices.push_back(nodes[n]);
+        if (centres.count(fault.name) != 0 && (!up.empty() || !down.empty()))
+          throw_input_error("Geometry/Gmsh/Fault arc centres",
+                            "the curved fault <" + fault.name +
+                              "> must run from boundary to boundary (a "
+                              "buried tip needs a straight-sided fault)");
         const auto centre = centres.find(fault.name);
         Point<2>   c;
         if (centre != centres.end())
@@ -436,7 +475,86 @@ namespace lithostress
                                     "centre");
           }
         fault.set_polyline(vertices, centre != centres.end(), c);
+        const auto length = [&](const unsigned int from,
+                                const unsigned int to) {
+          double l = 0;
+          for (unsigned int i = from; i < to; ++i)
+            l += vertices[i].distance(vertices[i + 1]);
+          return l;
+        };
+        fault.begin_s = length(0, up.size());
+        if (!down.empty())
+          fault.end_s = length(0, up.size() + chain.size() - 1);
       }
+  }
+
+  template <int dim>
+  std::vector<long>
+  GmshMesh<dim>::extension_to_boundary(const std::vector<long> &chain,
+                                       const bool               upper,
+                                       const std::set<long>    &avoid,
+                                       const std::string       &what) const
+  {
+    // The mesh's edges, and its boundary nodes (on an edge of one cell).
+    std::map<long, std::set<long>>       next;
+    std::map<std::pair<long, long>, int> cells_at_edge;
+    std::map<long, Point<2>>             position;
+    for (const FileCell &cell : file_cells)
+      if (cell.checkable)
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            const long a = cell.nodes[v], b = cell.nodes[(v + 1) % 4];
+            next[a].insert(b);
+            next[b].insert(a);
+            ++cells_at_edge[std::minmax(a, b)];
+            position[a] = cell.corners[v];
+          }
+    std::set<long> boundary;
+    for (const auto &[edge, count] : cells_at_edge)
+      if (count == 1)
+        boundary.insert({edge.first, edge.second});
+    long node = upper ? chain.front() : chain.back();
+    if (next.count(node) == 0 || boundary.count(node) != 0)
+      return {};
+    const long   from    = upper ? chain[1] : chain[chain.size() - 2];
+    Tensor<1, 2> heading = position[node] - position[from];
+    // Onwards along the edge that turns least, until the boundary.
+    std::vector<long> extension;
+    std::set<long>    visited(chain.begin(), chain.end());
+    while (boundary.count(node) == 0)
+      {
+        long   best        = -1;
+        double straightest = 0.5;
+        for (const long n : next[node])
+          {
+            if (visited.count(n) != 0 || avoid.count(n) != 0)
+              continue;
+            const Tensor<1, 2> step = position[n] - position[node];
+            const double       cosine =
+              step * heading / (step.norm() * heading.norm());
+            if (cosine > straightest)
+              {
+                straightest = cosine;
+                best        = n;
+              }
+          }
+        if (best < 0)
+          {
+            std::ostringstream where;
+            where << what << "'s " << (upper ? "upper" : "lower") << " end at ("
+                  << position[node] / scale
+                  << ") lies inside the mesh, and the mesh has no edges that "
+                     "continue the fault to the boundary (within 60 degrees "
+                     "of its direction, clear of other faults): add them, or "
+                     "draw the fault to the boundary";
+            throw_input_error("Geometry/Gmsh/Fault curves", where.str());
+          }
+        heading = position[best] - position[node];
+        visited.insert(best);
+        extension.push_back(best);
+        node = best;
+      }
+    return extension;
   }
 
   template <int dim>

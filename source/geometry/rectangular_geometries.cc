@@ -305,6 +305,22 @@ namespace lithostress
                       Patterns::Anything(),
                       "The side each fault dips towards (right | left): its "
                       "hanging wall.");
+    prm.declare_entry("Fault top depth",
+                      "0",
+                      Patterns::Anything(),
+                      "Depth below the top where each fault begins [length "
+                      "unit]: 0 = at the surface; deeper, the fault's upper "
+                      "end is a tip inside the body (a blind fault), and "
+                      "its plane above it a welded extension. It must be a "
+                      "row of the coarse mesh.");
+    prm.declare_entry("Fault bottom depth",
+                      "base",
+                      Patterns::Anything(),
+                      "Depth below the top where each fault ends [length "
+                      "unit]: `base` = at the base of the box; shallower, "
+                      "the fault's lower end is a tip inside the body. It "
+                      "must be a row of the coarse mesh, below `Fault top "
+                      "depth`.");
     prm.leave_subsection();
   }
 
@@ -381,8 +397,12 @@ namespace lithostress
     const auto towards = per_fault("Fault dips towards", ',');
     const auto centres =
       arc_centres(Utilities::trim(prm.get("Fault arc centre")), n_faults);
-    const auto radii  = per_fault("Fault arc radius", ',');
-    const auto depths = per_fault("Fault arc from depth", ',');
+    const auto radii   = per_fault("Fault arc radius", ',');
+    const auto depths  = per_fault("Fault arc from depth", ',');
+    const auto tops    = per_fault("Fault top depth", ',');
+    const auto bottoms = per_fault("Fault bottom depth", ',');
+    top_depths.assign(n_faults, 0);
+    bottom_depths.assign(n_faults, std::nan(""));
     for (unsigned int k = 0; k < n_faults; ++k)
       {
         FaultTrace &fault = faults[k];
@@ -412,6 +432,11 @@ namespace lithostress
         surface_x_given[k] =
           x == "auto" ? std::nan("")
                       : parse_number(x, where + "Fault surface x") * scale;
+        top_depths[k] =
+          parse_number(tops[k], where + "Fault top depth") * scale;
+        if (Utilities::trim(bottoms[k]) != "base")
+          bottom_depths[k] =
+            parse_number(bottoms[k], where + "Fault bottom depth") * scale;
       }
   }
 
@@ -480,6 +505,67 @@ namespace lithostress
                           "to the base, but it leaves it at y = " +
                             std::to_string(y / scale) + " (x = " +
                             std::to_string(fault.x_at(y) / scale) + ")");
+    place_fault_ends(k, scale);
+  }
+
+  template <int dim>
+  void
+  LayeredBox<dim>::place_fault_ends(const unsigned int k, const double scale)
+  {
+    const std::string where = "Geometry/Layered box/";
+    FaultTrace       &fault = faults[k];
+    const double      depth = interfaces.front() - interfaces.back();
+    const double      top = top_depths[k], tolerance = 1e-9 * width;
+    const double      bottom =
+      std::isnan(bottom_depths[k]) ? depth : bottom_depths[k];
+    const std::string of = " of the fault <" + fault.name + ">";
+    if (!(top >= 0 && top < depth))
+      throw_input_error(where + "Fault top depth",
+                        "the upper end" + of +
+                          " must lie in the box, from "
+                          "0 to above the base, got " +
+                          std::to_string(top / scale));
+    if (!(bottom > 0 && bottom <= depth + tolerance))
+      throw_input_error(where + "Fault bottom depth",
+                        "the lower end" + of +
+                          " must lie in the box, "
+                          "below the top and at most at the base, got " +
+                          std::to_string(bottom / scale));
+    if (!(bottom > top + tolerance))
+      throw_input_error(where + "Fault bottom depth",
+                        "the lower end" + of +
+                          " must lie below its upper "
+                          "end (Fault top depth)");
+    for (const auto &[end, entry] :
+         {std::make_pair(top, "Fault top depth"),
+          std::make_pair(bottom, "Fault bottom depth")})
+      if (!on_coarse_row(interfaces.front() - end))
+        throw_input_error(where + entry,
+                          "the end" + of + " at the depth " +
+                            std::to_string(end / scale) +
+                            " must be a row of the coarse mesh (a layer "
+                            "interface or a row of Cells per layer), so "
+                            "that the fault is at least a cell of the "
+                            "coarse mesh long and its tip is a vertex");
+    fault.begin_s =
+      top > 0 ? fault.trace_distance(fault.point_at_depth(top)) : 0;
+    fault.end_s = bottom < depth - tolerance
+                    ? fault.trace_distance(fault.point_at_depth(bottom))
+                    : std::numeric_limits<double>::infinity();
+  }
+
+  template <int dim>
+  bool
+  LayeredBox<dim>::on_coarse_row(const double y) const
+  {
+    for (unsigned int layer = 0; layer + 1 < interfaces.size(); ++layer)
+      for (unsigned int c = 0; c <= cells_per_layer[layer]; ++c)
+        if (std::abs(interfaces[layer] -
+                     (interfaces[layer] - interfaces[layer + 1]) * c /
+                       cells_per_layer[layer] -
+                     y) < 1e-9 * width)
+          return true;
+    return false;
   }
 
   template <int dim>
@@ -525,15 +611,7 @@ namespace lithostress
                           std::to_string(implied / scale) +
                           "; give that or `auto`");
     // The arc must begin on a row of the coarse mesh.
-    bool on_row = fault.arc_from_depth == 0;
-    for (unsigned int layer = 0; layer + 1 < interfaces.size(); ++layer)
-      for (unsigned int c = 0; c <= cells_per_layer[layer]; ++c)
-        on_row =
-          on_row || std::abs(interfaces[layer] -
-                             (interfaces[layer] - interfaces[layer + 1]) * c /
-                               cells_per_layer[layer] -
-                             y_top) < 1e-9 * width;
-    if (!on_row)
+    if (fault.arc_from_depth != 0 && !on_coarse_row(y_top))
       throw_input_error(where + "Fault arc from depth",
                         "must be a row of the coarse mesh (a layer "
                         "interface or a row of Cells per layer)");

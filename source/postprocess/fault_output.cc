@@ -92,15 +92,29 @@ namespace lithostress
   }
 
   FaultSummary
-  summarize_fault(const std::vector<FaultSample> &samples)
+  summarize_fault(const std::vector<FaultSample> &samples,
+                  const FaultTrace               &trace)
   {
     FaultSummary summary;
     for (const FaultSample &p : samples)
-      if (p.state != SlipState::stuck)
-        summary.sliding_depth_m = std::max(summary.sliding_depth_m, p.depth);
+      {
+        if (p.state != SlipState::stuck)
+          summary.sliding_depth_m = std::max(summary.sliding_depth_m, p.depth);
+        if (std::abs(p.slip) > std::abs(summary.max_slip_m))
+          {
+            summary.max_slip_m        = p.slip;
+            summary.max_slip_offset_m = -p.vertical_jump;
+          }
+      }
+    // The interface points are Gauss-Lobatto points: the first and the
+    // last lie on the fault's ends.
+    if (trace.buried_top() && !samples.empty())
+      summary.upper_tip_depth_m = samples.front().depth;
+    if (std::isfinite(trace.end_s) && !samples.empty())
+      summary.lower_tip_depth_m = samples.back().depth;
     // The vertical jump at s = 0, linear through the two shallowest points
-    // at different s.
-    if (!samples.empty())
+    // at different s; a buried fault does not reach the surface.
+    if (!samples.empty() && !trace.buried_top())
       {
         const FaultSample &a = samples.front();
         summary.throw_m      = -a.vertical_jump;
@@ -181,6 +195,9 @@ namespace lithostress
       return s.str();
     };
     out << "{\"throw_m\": " << number(summary.throw_m)
+        << ", \"max_slip_m\": " << number(summary.max_slip_m)
+        << ", \"upper_tip_depth_m\": " << number(summary.upper_tip_depth_m)
+        << ", \"lower_tip_depth_m\": " << number(summary.lower_tip_depth_m)
         << ", \"sliding_depth_m\": " << number(summary.sliding_depth_m)
         << ", \"nonlinear_iterations\": " << summary.nonlinear_iterations
         << ", \"linear_solves\": " << summary.linear_solves

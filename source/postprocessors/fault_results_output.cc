@@ -60,14 +60,16 @@ namespace lithostress
         for (const FaultSample &sample : all)
           if (sample.fault == k)
             samples.push_back(sample);
-        FaultSummary summary         = summarize_fault(samples);
+        FaultSummary summary = summarize_fault(samples, a.faults.trace(k));
         summary.nonlinear_iterations = a.statistics.solver.nonlinear_iterations;
         summary.linear_solves        = a.statistics.solver.linear_solves;
         summary.tensile_failure_distance_m =
           top == numbers::invalid_boundary_id
             ? std::nan("")
             : tensile_failure_distance(a.faults.trace(k),
-                                       summary.throw_m,
+                                       a.faults.trace(k).buried_top()
+                                         ? summary.max_slip_offset_m
+                                         : summary.throw_m,
                                        a.dof_handler,
                                        a.fe_space,
                                        a.stress_model,

@@ -22,20 +22,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 from dislocation_reference import surface_displacement  # noqa: E402
-from gmsh_writer import write_msh  # noqa: E402
+from gmsh_writer import graded, write_msh  # noqa: E402
 from lithotest import check, finish, read_csv, run, table  # noqa: E402
 
 DIP, DEPTH, SLIP, OPENING = math.atan(2.0), 10.0, 1.0, 0.5
-
-
-def graded(fine, n_fine, growth, far):
-    """Distances 0, fine, ..., n_fine fine, then growing by growth to far."""
-    d = [fine * k for k in range(n_fine + 1)]
-    h = fine
-    while d[-1] < far:
-        h *= growth
-        d.append(d[-1] + h)
-    return d
 
 
 # The half-space: rows graded from the surface down, columns from the

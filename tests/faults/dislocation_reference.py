@@ -30,3 +30,13 @@ def surface_displacement(x, b, a, delta, depth):
     beta = complex(b, a) * complex(math.cos(delta), -math.sin(delta))
     u = (beta * theta + beta.conjugate() * complex(zeta, 1.0) / (1 + zeta * zeta)) / math.pi
     return u.real, u.imag
+
+
+def buried_surface_displacement(x, b, a, delta, top, bottom):
+    """(u_x, u_y) at the surface point x for the same jump on the fault's
+    plane between the depths top and bottom only: by superposition, the
+    fault from the surface to bottom less the fault from the surface to
+    top (the plane meets the surface at x = 0)."""
+    deep = surface_displacement(x, b, a, delta, bottom)
+    shallow = surface_displacement(x, b, a, delta, top)
+    return deep[0] - shallow[0], deep[1] - shallow[1]

@@ -7,6 +7,16 @@ Used by the tests to check that a fault read from a Gmsh physical curve
 gives what the built-in generator gives."""
 
 
+def graded(fine, n_fine, growth, far):
+    """Distances 0, fine, ..., n_fine fine, then growing by growth to far."""
+    d = [fine * k for k in range(n_fine + 1)]
+    h = fine
+    while d[-1] < far:
+        h *= growth
+        d.append(d[-1] + h)
+    return d
+
+
 def write_msh(path, rows, groups):
     """rows: the vertex rows from the base up, each a list of x for its y
     ((y, [x0, x1, ...]), all rows the same length); groups: physical curves

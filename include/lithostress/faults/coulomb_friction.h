@@ -84,6 +84,21 @@ namespace lithostress
       return (lithostatic_density - pore_fluid_density) * gravity * depth;
     }
 
+    /** The response at a welded point (a buried tip, whose jump is held
+     * at zero): stuck, with the stuck law's shear traction for the shear
+     * jump @p w_s from the slip @p p_old and its tangent; no normal
+     * traction (the weld's reaction is not the law's). */
+    Response
+    welded(const double w_s, const double p_old) const
+    {
+      Response r;
+      r.shear_traction = shear_stiffness * (w_s - p_old);
+      r.tangent[0][0]  = shear_stiffness;
+      r.tangent[1][1]  = exact_contact ? 0. : normal_stiffness;
+      r.plastic_slip   = p_old;
+      return r;
+    }
+
     /** The return mapping for the jump (@p w_s, @p w_n) at @p depth, from
      * the accumulated slip @p p_old. */
     Response

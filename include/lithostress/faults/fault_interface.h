@@ -63,6 +63,16 @@ namespace lithostress
    * a nonlinear law solved by FrictionalSlidingSolver through
    * for_each_interface_point().
    *
+   * A fault that ends inside the body (FaultTrace::begin_s, end_s: a
+   * buried tip) keeps its whole trace as the cut between the two fields,
+   * and the faces of the trace beyond its ends are a welded extension:
+   * their two sides are tied by the locked law's constraints whatever the
+   * fault's law, before any other fault constraint, so the jump is zero
+   * at a tip's node, and they have no face terms and no interface points.
+   * The fault's own faces keep its law. Since the welded displacement is
+   * continuous, the solution is that of a body cut by the fault's own
+   * part only.
+   *
    * The members are defined by concern: parameters and queries in
    * fault_interface.cc, the topology (identification, two-colouring, FE
    * indices, face pairs, cliques) in fault_topology.cc, the constraints in
@@ -93,12 +103,15 @@ namespace lithostress
        * clockwise, the law's shear direction. */
       Tensor<1, dim> normal, shear;
       /** Depth below the top surface and distance along the fault from
-       * its surface trace [m]. */
+       * its upper end (the surface trace or a buried tip) [m]. */
       double depth = 0, distance = 0;
       /** The depth d of the friction law's overburden (ρ_l − ρ_w) g d
        * [m]: `depth`, or below y = 0 (`Overburden depth from = sea
        * level`). */
       double overburden_depth = 0;
+      /** Whether the point is a buried end of its fault (a tip): its node
+       * is welded, the jump there is zero and the law does not act. */
+      bool at_tip = false;
     };
 
     /**
@@ -209,11 +222,13 @@ namespace lithostress
                      const double                   length_scale);
 
     /** Find each fault's faces on the coarse mesh of @p triangulation
-     * (its level 0, the same on every rank), cut the body along them into
-     * blocks and give each block a field. Throws InputError if a fault has
-     * no faces in the mesh, does not split the body (its two sides are
-     * connected around an end inside the body), meets or crosses another
-     * fault, or the blocks cannot be given two fields. */
+     * (its level 0, the same on every rank), with those of the welded
+     * extensions beyond buried tips, cut the body along them into blocks
+     * and give each block a field. Throws InputError if a fault has no
+     * faces of its own in the mesh, its trace does not split the body
+     * (its two sides are connected around an end inside the body), meets
+     * or crosses another fault, or the blocks cannot be given two
+     * fields. */
     void
     identify(const Triangulation<dim> &triangulation);
 
@@ -470,6 +485,19 @@ namespace lithostress
     std::vector<unsigned char> coarse_field;
     std::vector<std::array<int, GeometryInfo<dim>::faces_per_cell>>
       coarse_face_fault;
+    /** Whether each coarse face on a fault lies on its welded extension
+     * beyond a buried tip (FaultTrace::on_fault_part). */
+    std::vector<std::array<bool, GeometryInfo<dim>::faces_per_cell>>
+      coarse_face_welded;
+
+    /** Whether face @p face of @p cell lies on a fault's welded
+     * extension. */
+    template <class Iterator>
+    bool
+    welded(const Iterator &cell, const unsigned int face) const
+    {
+      return coarse_face_welded[coarse_index(cell)][face];
+    }
   };
 } // namespace lithostress
 

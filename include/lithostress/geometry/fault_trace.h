@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,14 @@ namespace lithostress
    * then on that circle). Its surface trace is the upper end, depth is
    * measured from there, and it dips towards the side of its lower end
    * (towards +x if it is vertical).
+   *
+   * A fault may end inside the body (a buried tip): then only the part of
+   * the trace from `begin_s` to `end_s` (distances along it from its
+   * upper end) is the fault, and the rest is a welded extension to the
+   * boundary whose two sides are tied exactly (FaultInterface), so that
+   * the trace still splits the body into the blocks of the two
+   * displacement fields while the displacement is continuous across the
+   * extension and the jump vanishes at the tips.
    */
   struct FaultTrace
   {
@@ -65,6 +74,34 @@ namespace lithostress
     /** A fault read from a mesh: its vertices from the upper end down
      * (empty for the planar or listric trace above). */
     std::vector<Point<2>> polyline;
+    /** The fault's own part: from begin_s to end_s along the trace from
+     * its upper end [m]; outside it the trace is a welded extension. The
+     * default is the whole trace. */
+    double begin_s = 0, end_s = std::numeric_limits<double>::infinity();
+
+    /** Whether the fault ends inside the body above (a buried upper tip). */
+    bool
+    buried_top() const
+    {
+      return begin_s > 0;
+    }
+
+    /** Whether the point @p p of the trace lies on the fault's own part
+     * (within @p tolerance [m] of it), not on its welded extension. */
+    bool
+    on_fault_part(const Point<2> &p, const double tolerance) const
+    {
+      const double s = trace_distance(p);
+      return s >= begin_s - tolerance && s <= end_s + tolerance;
+    }
+
+    /** The point of the planar or listric trace at @p depth [m] below the
+     * top surface. */
+    Point<2>
+    point_at_depth(const double depth) const
+    {
+      return Point<2>(x_at(top_y - depth), top_y - depth);
+    }
 
     /** Make a trace of @p vertices (from the upper end down; arcs about
      * @p centre if @p arc): sets the surface point and direction. */
@@ -86,10 +123,21 @@ namespace lithostress
     bool
     in_hanging_wall(const Point<2> &p) const;
 
-    /** Distance along the fault from its surface trace to the point of
-     * the fault at the height of @p p [m]. */
+    /** Distance along the fault from its upper end (the surface trace,
+     * or the buried upper tip) to the point of the fault nearest @p p
+     * (at the height of @p p for the planar or listric trace) [m]:
+     * s of the fault's slip and output (negative on an extension above a
+     * buried tip). */
     double
-    distance_along(const Point<2> &p) const;
+    distance_along(const Point<2> &p) const
+    {
+      return trace_distance(p) - begin_s;
+    }
+
+    /** Distance along the whole trace, extensions included, from its
+     * upper end to the point of the trace nearest @p p [m]. */
+    double
+    trace_distance(const Point<2> &p) const;
 
     /** Depth of @p p below the top surface [m]. */
     double

@@ -63,6 +63,18 @@ namespace lithostress
     void
     read_fault_curves(const std::map<std::string, Point<dim>> &centres);
 
+    /** The nodes that continue the fault curve @p chain (its node
+     * numbers from the upper end down) from its upper (@p upper) or lower
+     * end to the boundary along the mesh's edges, each step the edge
+     * that turns least, avoiding the nodes @p avoid of the fault curves:
+     * the welded extension beyond a buried tip (none if the end is on the
+     * boundary). Throws InputError naming @p what if there is none. */
+    std::vector<long>
+    extension_to_boundary(const std::vector<long> &chain,
+                          const bool               upper,
+                          const std::set<long>    &avoid,
+                          const std::string       &what) const;
+
     /** The mesh file without the fault curves' line elements. */
     std::string
     text_without_fault_lines() const;

@@ -135,9 +135,10 @@ namespace lithostress
 
   private:
     /** The faults' entries (`Fault surface x`, `Fault names`, `Fault
-     * dip`, `Fault dips towards` and the arc's): each fault's trace as
-     * given, planar or listric (thesis §6.1-6.3), into `faults` and
-     * `surface_x_given`. One value for all faults or one per fault. */
+     * dip`, `Fault dips towards`, the arc's and the buried ends'): each
+     * fault's trace as given, planar or listric (thesis §6.1-6.3), into
+     * `faults`, `surface_x_given`, `top_depths` and `bottom_depths`. One
+     * value for all faults or one per fault. */
     void
     parse_fault_geometry(ParameterHandler &prm, const double scale);
 
@@ -167,6 +168,17 @@ namespace lithostress
     void
     place_fault_arc(const unsigned int k, const double scale);
 
+    /** The buried ends of fault @p k (`Fault top depth`, `Fault bottom
+     * depth`): each on a row of the coarse mesh, the top above the
+     * bottom, both in the box; sets the trace's own part. */
+    void
+    place_fault_ends(const unsigned int k, const double scale);
+
+    /** Whether the height @p y is a row of the coarse mesh's vertices (a
+     * layer interface or a row of `Cells per layer`). */
+    bool
+    on_coarse_row(const double y) const;
+
     /** Sort the faults left to right at mid-depth; throw if two meet or
      * cross in the box. */
     void
@@ -182,6 +194,9 @@ namespace lithostress
     std::vector<FaultTrace> faults;
     /** `Fault surface x` as given [m] (NaN for `auto`). */
     std::vector<double> surface_x_given;
+    /** `Fault top depth` and `Fault bottom depth` as given [m] (bottom:
+     * NaN for `base`). */
+    std::vector<double> top_depths, bottom_depths;
   };
 } // namespace lithostress
 

@@ -10,6 +10,7 @@
 #include <lithostress/materials/stress_model.h>
 #include <lithostress/postprocess/griffith_failure.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ namespace lithostress
 {
   /**
    * The state of a fault at one interface point, as fault.csv gives it:
-   * s = distance along the fault from its surface trace [m]; slip = w·d
+   * s = distance along the fault from its upper end [m]; slip = w·d
    * (d down dip: positive = normal sense, hanging wall down) and
    * opening = w·n [m] (w = u(hanging wall) − u(footwall), n from the
    * footwall into the hanging wall); the traction σ n on the footwall's
@@ -70,6 +71,13 @@ namespace lithostress
      * (extrapolated from the two shallowest points): positive when the
      * hanging wall is downthrown. */
     double throw_m = 0;
+    /** The slip w·d of largest magnitude along the fault [m] (positive in
+     * the normal sense), and the vertical offset −w_y there: a buried
+     * fault's size and sense, where the throw at the surface is zero. */
+    double max_slip_m = 0, max_slip_offset_m = 0;
+    /** The depths of the fault's ends inside the body [m] (NaN: the end
+     * is on the boundary). */
+    double upper_tip_depth_m = std::nan(""), lower_tip_depth_m = std::nan("");
     /** The deepest point that slides or is open [m] (0: none). */
     double sliding_depth_m = 0;
     /** Distance from the surface trace to where the top surface of the
@@ -79,9 +87,11 @@ namespace lithostress
     unsigned int nonlinear_iterations = 0, linear_solves = 0;
   };
 
-  /** Throw and sliding depth from @p samples. */
+  /** Throw, largest slip, tips and sliding depth from @p samples of the
+   * fault @p trace (a buried upper tip: no throw at the surface). */
   FaultSummary
-  summarize_fault(const std::vector<FaultSample> &samples);
+  summarize_fault(const std::vector<FaultSample> &samples,
+                  const FaultTrace               &trace);
 
   /** Distance from the surface trace of @p trace to the node of the top
    * surface @p top on the downthrown side (the hanging wall if
