@@ -13,41 +13,33 @@ namespace lithostress
 {
   namespace
   {
-    /** The node at an interface point on the side exact contact constrains
-     * (field 1 where it has one there, else field 0; PointValues::node):
-     * the DoFs whose shape functions' jumps @p jump are ±e_d there (a
-     * Lobatto point is a node of the finer side), of the field-1 DoFs
-     * [@p n_minus, n) first. Returns the sign of those jumps (0: no node);
-     * @p on_field_1 tells whose node it is. */
+    /** The node at an interface point among the DoFs [@p begin, @p end)
+     * of one side: the DoFs whose shape functions' jumps @p jump are ±e_d
+     * there (a Lobatto point is a node of the finer side). Returns the sign
+     * of those jumps (0: that side has no node there, and @p node is
+     * invalid). */
     template <int dim>
     double
-    find_node(const std::vector<Tensor<1, dim>>          &jump,
+    side_node(const std::vector<Tensor<1, dim>>          &jump,
               const std::vector<types::global_dof_index> &dofs,
-              const unsigned int                          n_minus,
-              std::array<types::global_dof_index, dim>   &node,
-              bool                                       &on_field_1)
+              const unsigned int                          begin,
+              const unsigned int                          end,
+              std::array<types::global_dof_index, dim>   &node)
     {
-      const unsigned int n = jump.size();
-      for (const bool field_1 : {true, false})
-        {
-          node.fill(numbers::invalid_dof_index);
-          double       sign  = 0;
-          unsigned int found = 0;
-          for (unsigned int i = field_1 ? n_minus : 0;
-               i < (field_1 ? n : n_minus);
-               ++i)
-            for (unsigned int d = 0; d < dim; ++d)
-              if (std::abs(std::abs(jump[i][d]) - 1) < 1e-10 &&
-                  node[d] == numbers::invalid_dof_index)
-                {
-                  node[d] = dofs[i];
-                  sign    = jump[i][d] > 0 ? 1 : -1;
-                  ++found;
-                }
-          on_field_1 = field_1;
-          if (found == dim)
-            return sign;
-        }
+      node.fill(numbers::invalid_dof_index);
+      double       sign  = 0;
+      unsigned int found = 0;
+      for (unsigned int i = begin; i < end; ++i)
+        for (unsigned int d = 0; d < dim; ++d)
+          if (std::abs(std::abs(jump[i][d]) - 1) < 1e-10 &&
+              node[d] == numbers::invalid_dof_index)
+            {
+              node[d] = dofs[i];
+              sign    = jump[i][d] > 0 ? 1 : -1;
+              ++found;
+            }
+      if (found == dim)
+        return sign;
       node.fill(numbers::invalid_dof_index);
       return 0;
     }
@@ -181,7 +173,7 @@ namespace lithostress
     std::vector<types::global_dof_index> dofs(n), minus_dofs(n_minus),
       plus_dofs(n_plus);
     std::vector<Tensor<1, dim>>              jump(n);
-    std::array<types::global_dof_index, dim> node;
+    std::array<types::global_dof_index, dim> node, reaction;
     const unsigned int none  = numbers::invalid_unsigned_int;
     unsigned int       index = 0;
     // The finer side's whole face, the coarser side's subface.
@@ -252,11 +244,20 @@ namespace lithostress
             Tensor<1, dim> w;
             for (unsigned int i = 0; i < n; ++i)
               w += values[i] * jump[i];
-            bool         on_field_1 = false;
-            const double node_sign =
-              find_node<dim>(jump, dofs, n_minus, node, on_field_1);
+            // The node exact contact constrains: field 1's where it has
+            // one here, else field 0's (the finer side of a hanging face).
+            double     node_sign = side_node<dim>(jump, dofs, n_minus, n, node);
+            const bool on_field_1 = node_sign != 0;
+            if (!on_field_1)
+              node_sign = side_node<dim>(jump, dofs, 0, n_minus, node);
             const Point<dim> &node_position =
               on_field_1 ? p->quadrature_point(qp) : m->quadrature_point(q);
+            // The finer side's node (field 1's on faces of equal level):
+            // its reaction is the traction times its Lobatto weight.
+            const bool   minus_finer = plus_subface_no != none;
+            const double reaction_sign =
+              minus_finer ? side_node<dim>(jump, dofs, 0, n_minus, reaction)
+                          : side_node<dim>(jump, dofs, n_minus, n, reaction);
             visitor(PointValues{index++,
                                 point,
                                 w,
@@ -266,6 +267,8 @@ namespace lithostress
                                 node,
                                 node_sign,
                                 node_position,
+                                reaction,
+                                reaction_sign,
                                 minus,
                                 plus});
           }

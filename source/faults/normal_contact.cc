@@ -49,18 +49,24 @@ namespace lithostress
       dof_handler, fe_space, nullptr, [&](const PointValues &values) {
         const unsigned int k = values.point.fault;
         const bool exact = faults.exact_contact(k) && values.node_sign != 0 &&
+                           values.reaction_sign != 0 &&
                            faults.has_face_terms(k) && !values.point.at_tip;
         in_contact.push_back(exact);
         slides.push_back(faults.friction(k).slides);
         keys.push_back(values.node[0]);
-        nodes.push_back(values.node);
-        signs.push_back(values.node_sign);
+        // The reaction is read at the finer side's node (on a hanging
+        // face whose finer side is the footwall the tied node is the
+        // coarser hanging wall's, whose basis function spans both
+        // subfaces and whose reaction is not the traction times a weight).
+        nodes.push_back(values.reaction_node);
+        signs.push_back(values.reaction_sign);
         // The normal at the node, as its tie takes it.
         normals.push_back(
           faults.trace(k).hanging_wall_normal(values.node_position));
         if (exact)
-          area.add(std::vector<types::global_dof_index>{values.node[0]},
-                   std::vector<double>{values.point.JxW});
+          area.add(
+            std::vector<types::global_dof_index>{values.reaction_node[0]},
+            std::vector<double>{values.point.JxW});
       });
     area.compress(VectorOperation::add);
     weight.reinit(locally_owned, locally_relevant, communicator);
@@ -132,7 +138,7 @@ namespace lithostress
           double r_n = 0;
           for (unsigned int d = 0; d < dim; ++d)
             r_n += residual[nodes[i][d]] * normals[i][d];
-          tractions[i] = -signs[i] * r_n / weight[keys[i]];
+          tractions[i] = -signs[i] * r_n / weight[nodes[i][0]];
         }
   }
 

@@ -42,31 +42,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 sys.path.insert(0, HERE)
 from dislocation_reference import buried_surface_displacement  # noqa: E402
-from gmsh_writer import graded, write_msh  # noqa: E402
+from buried_meshes import half_space_msh  # noqa: E402
 from lithotest import check, finish, read_csv, run, table  # noqa: E402
 
 TOP, BOTTOM = 6.0, 14.0
-
-
-def half_space_msh(path, dip, fine, n_fine):
-    """The half-space as a parallelogram whose columns follow the fault's
-    plane x = d cot(dip), n_fine cells of `fine` km from it and from the
-    surface, then graded to 50 000 km; the physical curve "fault" runs
-    along the plane from TOP to BOTTOM only."""
-    depths = graded(fine, n_fine, 1.5, 50000.0)
-    offsets = graded(fine, n_fine, 1.5, 50000.0)
-    columns = [-o for o in reversed(offsets[1:])] + offsets
-    rows = [(-d, [d / math.tan(dip) + o for o in columns]) for d in reversed(depths)]
-    nx, ny = len(columns), len(rows)
-    on_fault = columns.index(0.0)
-    row_at = {round(-y, 9): j for j, (y, xs) in enumerate(rows)}
-    write_msh(path, rows, {
-        "left": [(0, j, 0, j + 1) for j in range(ny - 1)],
-        "right": [(nx - 1, j, nx - 1, j + 1) for j in range(ny - 1)],
-        "base": [(i, 0, i + 1, 0) for i in range(nx - 1)],
-        "top": [(i, ny - 1, i + 1, ny - 1) for i in range(nx - 1)],
-        "fault": [(on_fault, j, on_fault, j + 1)
-                  for j in range(row_at[BOTTOM], row_at[TOP])]})
 
 
 def errors(out, slip, dip):
@@ -87,7 +66,7 @@ for dip_degrees, slip, sense, fine, n_fine, refinement in ((60.0, 1.0, "normal",
                                                           (30.0, -1.0, "thrust", 2.0, 12, 1)):
     dip = math.radians(dip_degrees)
     msh = os.path.abspath("buried_half_space_%g.msh" % dip_degrees)
-    half_space_msh(msh, dip, fine, n_fine)
+    half_space_msh(msh, dip, fine, n_fine, TOP, BOTTOM)
     out = os.path.abspath("output_buried_dislocation_%g" % dip_degrees)
     run("faults/buried_dislocation.prm", out, 1,
         ["Geometry/Gmsh/Mesh file=" + msh, "Faults/fault/Slip=%g" % slip,

@@ -46,26 +46,10 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 sys.path.insert(0, HERE)
-from gmsh_writer import graded, write_msh  # noqa: E402
+from buried_meshes import crack_msh  # noqa: E402
 from lithotest import check, finish, run  # noqa: E402
 
 A, G, NU, TAU, SIGMA_N = 5000.0, 3e10, 0.25, 1e7, 5e7
-
-
-def crack_msh(path, far):
-    """A square of 1 km cells within 8 km of the crack (x = 0, |y| <= 5
-    km, the physical curve "fault"), then graded by doubling to `far` km
-    on each side."""
-    g = graded(1.0, 8, 2.0, far)
-    axis = [-o for o in reversed(g[1:])] + g
-    n, mid = len(axis), axis.index(0.0)
-    rows = [(y, list(axis)) for y in axis]
-    write_msh(path, rows, {
-        "left": [(0, j, 0, j + 1) for j in range(n - 1)],
-        "right": [(n - 1, j, n - 1, j + 1) for j in range(n - 1)],
-        "base": [(i, 0, i + 1, 0) for i in range(n - 1)],
-        "top": [(i, n - 1, i + 1, n - 1) for i in range(n - 1)],
-        "fault": [(mid, j, mid, j + 1) for j in range(axis.index(-5.0), axis.index(5.0))]})
 
 
 def slips(out):

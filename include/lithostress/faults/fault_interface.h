@@ -152,6 +152,13 @@ namespace lithostress
       /** Where that node is (its side's mapped point; on a curved hanging
        * face the coarser side's mapping puts `point` O(h³) away). */
       const Point<dim> &node_position;
+      /** The DoFs (x, y) of the finer side's node at this point (field 1's
+       * on faces of equal level) and the sign of their jumps: the node
+       * whose reaction is the contact traction times its Lobatto weight
+       * (NormalContact), which the constrained node's is not where it is
+       * the coarser side's. */
+      const std::array<types::global_dof_index, dim> &reaction_node;
+      double                                          reaction_sign;
       /** The face pair's field-0 and field-1 cells (for a law that reads
        * the bulk beside the fault, as FSHEAR's element stresses). */
       const typename DoFHandler<dim>::active_cell_iterator &minus_cell,

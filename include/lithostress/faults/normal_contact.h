@@ -163,7 +163,8 @@ namespace lithostress
     std::vector<std::array<types::global_dof_index, dim>> nodes;
     std::vector<double>                                   signs;
     std::vector<Tensor<1, dim>>                           normals;
-    /** Σ JxW of the points at each node (indexed by the node's key). */
+    /** Σ JxW of the points at each node (indexed by the x DoF of the
+     * finer side's node, whose reaction is read). */
     TrilinosWrappers::MPI::Vector weight;
     std::vector<double>           tractions;
     /** The keys of the open nodes, and a count of their changes. */
