@@ -24,6 +24,8 @@ Every input is optional: a figure is made when its data exist, and one line
   fault.csv                          s,x,y,slip,opening,            fault.png (and the fault
                                      shear_traction,                trace on
                                      normal_traction,state          principal_stresses.png)
+  fault-NNNNN.csv (two or more)      s,slip (as fault.csv)          fault_history.png (slip at
+                                                                    each output time)
 
 figures.json, e.g. {"length_unit": "km", "length_scale": 1000.0,
 "title": "plate flexure", "stress_unit_scale": 1e6}: length_scale is metres
@@ -709,6 +711,42 @@ def plot_fault(directory, settings, name, path, png):
     return png
 
 
+def plot_fault_history(directory, settings):
+    """fault_history.png: the slip along the (first) fault at every output
+    time of a visco-elastic run (fault-NNNNN.csv, one per `Time
+    stepping/Output times`), when there are at least two."""
+    paths = sorted(glob.glob(os.path.join(glob.escape(directory), "fault-[0-9][0-9][0-9][0-9][0-9].csv")))
+    if len(paths) < 2:
+        return None
+    prm = read_prm(os.path.join(directory, "parameters.prm"))
+    times = [t.strip() for t in prm.get("Time stepping/Output times", "").split(",") if t.strip()]
+    end = prm.get("Time stepping/End time", "").strip()
+    if end and (not times or float(times[-1]) != float(end)):
+        times.append(end)
+    time_unit = prm.get("Time stepping/Time unit", "s").strip()
+    unit, scale = settings["length_unit"], settings["length_scale"]
+    fig, ax = plt.subplots(figsize=(7.5, 4.5))
+    colors = plt.cm.viridis(np.linspace(0, 0.9, len(paths)))
+    for k, (path, color) in enumerate(zip(paths, colors)):
+        fault = read_fault(path)
+        if fault is None or len(fault[1]) == 0:
+            continue
+        values = fault[0]
+        label = "t = %s %s" % (times[k], time_unit) if k < len(times) else os.path.basename(path)
+        ax.plot(values["s"] / scale, values["slip"], color=color, linewidth=1.2, label=label)
+    ax.axhline(0, color="0.7", linewidth=0.6)
+    ax.set_xlabel("s, distance along the fault from its upper end [%s]" % unit)
+    ax.set_ylabel("slip [m] (+ normal, - reverse)")
+    ax.set_title(titled(settings, "slip along the fault at the output times"), fontsize=10)
+    ax.legend(fontsize=8, loc="best")
+    ax.tick_params(labelsize=8)
+    fig.tight_layout()
+    png = os.path.join(directory, "fault_history.png")
+    save_complete(fig, png)
+    plt.close(fig)
+    return png
+
+
 def thin_plate_curve(directory, x_profile, uy_profile):
     """The thin-plate comparison as (x [m], u_y [m], forebulge markers) or
     None. thin_plate_comparison.csv is either a curve (columns x and one
@@ -1019,7 +1057,8 @@ def main():
     jobs = [("principal stresses", lambda: plot_principal_stresses(directory, settings)),
             ("surface profile", lambda: plot_surface_profile(directory, settings)),
             ("point history", lambda: plot_point_history(directory, settings)),
-            ("fault", lambda: plot_faults(directory, settings))]
+            ("fault", lambda: plot_faults(directory, settings)),
+            ("fault history", lambda: plot_fault_history(directory, settings))]
     for path in sorted(glob.glob(os.path.join(glob.escape(directory), "stress_depth_*.csv"))):
         jobs.append((os.path.basename(path), lambda p=path: plot_stress_depth(p, settings)))
     status = 0

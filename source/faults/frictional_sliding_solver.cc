@@ -345,11 +345,18 @@ namespace lithostress
                  Tensor<2, dim>    &D);
 
       /** The residual norm ‖K u − f + ∫[v]·t(u)‖ (constrained rows left
-       * out) at @p owned, with the return mapping from the committed slip;
+       * out; in exact contact of the tied system, condense_ties()) at
+       * @p owned, with the return mapping from the committed slip;
        * u_ghost gets @p owned, excess the largest excess shear against the
        * law of the last solve. */
       double
       residual_norm(const TrilinosWrappers::MPI::Vector &owned);
+
+      /** Exact contact: @p r := C^T @p r for the ties of the closed nodes
+       * (each tied row's residual added to the DoFs its tie takes it from,
+       * with the tie's weights, and the tied row zeroed). */
+      void
+      condense_ties(TrilinosWrappers::MPI::Vector &r) const;
 
       /** The system of the law @p law linearised at u_ghost (the bulk
        * matrix with ∫[v]·D[u], the right-hand side less the affine part),
@@ -735,19 +742,66 @@ namespace lithostress
     {
       Timer timer;
       if (contact)
-        contact_tractions(owned);
+        {
+          // The residual of the tied system, C^T (K u - f + the shear): a
+          // tied row's onto the DoFs its tie takes it from. The contact
+          // tractions (the ties' reactions) are internal to the ties: the
+          // residual does not depend on how they are read from the
+          // reactions, which on hanging fault faces is a weighted mean.
+          contact_tractions(owned);
+          add_interface_forces(false);
+          residual += force;
+          condense_ties(residual);
+        }
       else
         {
           u_ghost = owned;
           system.matrix.vmult(residual, owned);
           residual -= system.rhs;
+          add_interface_forces(true);
+          residual += force;
         }
-      add_interface_forces(true);
-      residual += force;
       constraints.set_zero(residual);
       const double norm = residual.l2_norm();
       time_residual += timer.wall_time();
       return norm;
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::condense_ties(TrilinosWrappers::MPI::Vector &r) const
+    {
+      const AffineConstraints<double> &ties = linearised.constraints;
+      TrilinosWrappers::MPI::Vector    moved;
+      moved.reinit(system.locally_owned,
+                   system.locally_relevant,
+                   communicator,
+                   true);
+      std::vector<types::global_dof_index> sources;
+      std::vector<double>                  values;
+      const auto tied = [&](const types::global_dof_index i) {
+        return ties.is_constrained(i) && !constraints.is_constrained(i);
+      };
+      for (const auto i : system.locally_owned)
+        if (tied(i))
+          {
+            sources.clear();
+            values.clear();
+            for (const auto &[j, w] : *ties.get_constraint_entries(i))
+              {
+                sources.push_back(j);
+                values.push_back(w * r[i]);
+              }
+            moved.add(sources, values);
+          }
+      moved.compress(VectorOperation::add);
+      // r += moved - (the tied rows of r), written once per owned row (the
+      // same operation on every rank).
+      TrilinosWrappers::MPI::Vector change(system.locally_owned, communicator);
+      for (const auto i : system.locally_owned)
+        change[i] = moved[i] - (tied(i) ? r[i] : 0.);
+      change.compress(VectorOperation::insert);
+      r += change;
     }
 
     template <int dim>

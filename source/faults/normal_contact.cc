@@ -40,11 +40,19 @@ namespace lithostress
       , locally_relevant(locally_relevant)
       , communicator(dof_handler.get_communicator())
   {
-    // Each node's share of the fault's area, summed over its points on
-    // every rank (a node between two faces has a point on each).
+    // Each node's share of the fault's area: the integral of its basis
+    // function over the fault, ∫ |[φ]| ds at the interface points (the
+    // finer side's Lobatto rule, exact for it), summed on every rank; the
+    // reaction is read at the finer side's node, whose basis function is
+    // 1 at its point and 0 at the pair's other points, so that its
+    // reaction is the traction times that integral. (Where the finer side
+    // changes from one face pair to the next, a node at their common
+    // vertex is the coarser side's on one of them: there the quotient is
+    // a weighted mean of the tractions nearby.)
     TrilinosWrappers::MPI::Vector area;
     area.reinit(locally_owned, locally_relevant, communicator, true);
     using PointValues = typename FaultInterface<dim>::PointValues;
+    std::vector<double> integrals;
     faults.for_each_interface_point(
       dof_handler, fe_space, nullptr, [&](const PointValues &values) {
         const unsigned int k = values.point.fault;
@@ -57,16 +65,18 @@ namespace lithostress
         // The reaction is read at the finer side's node (on a hanging
         // face whose finer side is the footwall the tied node is the
         // coarser hanging wall's, whose basis function spans both
-        // subfaces and whose reaction is not the traction times a weight).
+        // subfaces).
         nodes.push_back(values.reaction_node);
         signs.push_back(values.reaction_sign);
         // The normal at the node, as its tie takes it.
         normals.push_back(
           faults.trace(k).hanging_wall_normal(values.node_position));
-        if (exact)
-          area.add(
-            std::vector<types::global_dof_index>{values.reaction_node[0]},
-            std::vector<double>{values.point.JxW});
+        if (!faults.exact_contact(k) || !faults.has_face_terms(k))
+          return;
+        integrals.resize(values.dofs.size());
+        for (unsigned int i = 0; i < values.dofs.size(); ++i)
+          integrals[i] = values.point.JxW * values.shape_jumps[i].norm();
+        area.add(values.dofs, integrals);
       });
     area.compress(VectorOperation::add);
     weight.reinit(locally_owned, locally_relevant, communicator);
