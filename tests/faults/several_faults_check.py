@@ -33,6 +33,11 @@ terms and constraints must orient the jump per fault). Left side fixed.
    tolerance (1e-6 of the throw); the block between the faults subsides
    (both throws positive, the hanging wall of both) and the footwalls
    rise next to the faults (rift shoulders, u_y > 0).
+6. The same graben with both faults buried, from 5 km down to the base
+   (`Fault top depth = 5`, rows every 5 km): two faults with buried tips
+   in one model, on 2 ranks. Asserted: the largest slips of the two faults
+   agree to 1e-6 (the mirror symmetry), both are normal slip, the slip at
+   each upper tip is zero and fault_summary gives the tip's depth, 5 km.
 Round-off: the solver stops at 1e-12; values relative to |w| or tau: 1e-9.
 """
 import math
@@ -201,4 +206,23 @@ check(min(throws) > 0 and abs(throws[0] - throws[1]) <= 1e-6 * throws[0] and asy
       "is symmetric about 500 km to %.1e m within 200 km of it (%.1e m at the edges, within the "
       "flexure's tail %.1e m), the shoulders rise by %.1f and %.1f m"
       % (throws[0], throws[1], asym, edge, tail, shoulders[0], shoulders[1]))
+
+# 6. The graben with buried upper tips.
+out = os.path.abspath("output_graben_buried")
+run(os.path.join(ROOT, "prm", "graben.prm"), out, 2,
+    ["Mesh refinement/Initial global refinement=1", "Geometry/Layered box/Cells per layer=4",
+     "Geometry/Layered box/Fault top depth=5", "Output/Write ParaView files=false",
+     "Output/Figures/Enabled=false"])
+summaries, tips = [], []
+for name in ("west", "east"):
+    with open(os.path.join(out, "fault_summary_%s.json" % name)) as f:
+        summaries.append(json.load(f))
+    rows = read_csv(os.path.join(out, "fault_%s.csv" % name))
+    tips.append(max(abs(r["slip"]) for r in rows if r["s"] == 0))
+slips = [sm["max_slip_m"] for sm in summaries]
+check(min(slips) > 0 and abs(slips[0] - slips[1]) <= 1e-6 * slips[0] and max(tips) == 0
+      and all(sm["upper_tip_depth_m"] == 5000 and sm["throw_m"] == 0 for sm in summaries),
+      "graben with both faults buried below 5 km (2 ranks): largest normal slips %.4f and %.4f m, "
+      "zero at the upper tips (%s), tips at %s m"
+      % (slips[0], slips[1], tips, [sm["upper_tip_depth_m"] for sm in summaries]))
 finish()
