@@ -26,6 +26,8 @@ Every input is optional: a figure is made when its data exist, and one line
                                      normal_traction,state          principal_stresses.png)
   fault-NNNNN.csv (two or more)      s,slip (as fault.csv)          fault_history.png (slip at
                                                                     each output time)
+  fault_summary.json with a tip      upper/lower_tip_depth_m        principal_stresses_tips.png
+                                                                    (the crosses around the fault)
 
 figures.json, e.g. {"length_unit": "km", "length_scale": 1000.0,
 "title": "plate flexure", "stress_unit_scale": 1e6}: length_scale is metres
@@ -382,7 +384,9 @@ def bar_scale_stresses(magnitude):
     return ref, CLIP_FACTOR * ref
 
 
-def plot_principal_stresses(directory, settings):
+def plot_principal_stresses(directory, settings, window=None, name="principal_stresses.png"):
+    """The principal-stress crosses over the body, or within @window
+    (x0, x1, y0, y1 in plotting units) into @name."""
     path = os.path.join(directory, "principal_stresses.csv")
     if not os.path.exists(path):
         return None
@@ -390,6 +394,10 @@ def plot_principal_stresses(directory, settings):
     ok = np.ones(len(t["x"]), bool)
     for v in t.values():
         ok &= np.isfinite(v)
+    if window is not None:
+        ls = settings["length_scale"]
+        ok &= ((t["x"] / ls >= window[0]) & (t["x"] / ls <= window[1])
+               & (t["y"] / ls >= window[2]) & (t["y"] / ls <= window[3]))
     if not ok.any():
         sys.stderr.write("plot_figures: %s has no finite rows; no principal-stress figure\n" % path)
         return None
@@ -407,7 +415,9 @@ def plot_principal_stresses(directory, settings):
             outline = None
     traces = fault_traces(directory, settings)
 
-    if outline is not None:
+    if window is not None:
+        xmin, xmax, ymin, ymax = window
+    elif outline is not None:
         pts = outline.reshape(-1, 2)
         xmin, xmax = min(pts[:, 0].min(), x.min()), max(pts[:, 0].max(), x.max())
         ymin, ymax = min(pts[:, 1].min(), y.min()), max(pts[:, 1].max(), y.max())
@@ -423,7 +433,7 @@ def plot_principal_stresses(directory, settings):
     smax = float(magnitude.max())
     s_ref, s_clip = bar_scale_stresses(magnitude)
     aspect = width / height if height > 0 else math.inf
-    zoom = aspect > 8
+    zoom = aspect > 8 and window is None
     unit, sunit = settings["length_unit"], settings["stress_unit"]
 
     # Bar scale: the bar for s_ref is a fixed fraction of the median spacing
@@ -580,10 +590,40 @@ def plot_principal_stresses(directory, settings):
         else:
             fig.text((x_left + panel_w) / fig_w, (fig_h - 0.2) / fig_h, note,
                      fontsize=8, color="0.3", va="top", ha="right")
-    out = os.path.join(directory, "principal_stresses.png")
+    out = os.path.join(directory, name)
     save_complete(fig, out)
     plt.close(fig)
     return out
+
+
+def plot_tip_stresses(directory, settings):
+    """principal_stresses_tips.png: the crosses around a fault with a buried
+    tip (fault_summary's upper_tip_depth_m or lower_tip_depth_m), over the
+    fault's extent and half as much again on every side."""
+    if not os.path.exists(os.path.join(directory, "principal_stresses.csv")):
+        return None
+    for _, path, _ in fault_files(directory):
+        summary_path = os.path.join(directory, os.path.basename(path).replace("fault", "fault_summary", 1)
+                                    .replace(".csv", ".json"))
+        if not os.path.exists(summary_path):
+            continue
+        with open(summary_path) as f:
+            summary = json.load(f)
+        if summary.get("upper_tip_depth_m") is None and summary.get("lower_tip_depth_m") is None:
+            continue
+        fault = read_fault(path)
+        if fault is None or len(fault[1]) == 0:
+            continue
+        ls = settings["length_scale"]
+        x, y = fault[0]["x"] / ls, fault[0]["y"] / ls
+        margin = 0.5 * max(x.max() - x.min(), y.max() - y.min())
+        # Not above the body: the highest sample point (the top surface's
+        # row of crosses) and half a margin's tenth for the bars.
+        samples = read_table(os.path.join(directory, "principal_stresses.csv"), ["y"])
+        top = min(y.max() + margin, float(np.nanmax(samples["y"])) / ls + 0.05 * margin)
+        window = (x.min() - margin, x.max() + margin, y.min() - margin, top)
+        return plot_principal_stresses(directory, settings, window, "principal_stresses_tips.png")
+    return None
 
 
 # --------------------------------------------------------------------------
@@ -1058,7 +1098,8 @@ def main():
             ("surface profile", lambda: plot_surface_profile(directory, settings)),
             ("point history", lambda: plot_point_history(directory, settings)),
             ("fault", lambda: plot_faults(directory, settings)),
-            ("fault history", lambda: plot_fault_history(directory, settings))]
+            ("fault history", lambda: plot_fault_history(directory, settings)),
+            ("stresses at the tips", lambda: plot_tip_stresses(directory, settings))]
     for path in sorted(glob.glob(os.path.join(glob.escape(directory), "stress_depth_*.csv"))):
         jobs.append((os.path.basename(path), lambda p=path: plot_stress_depth(p, settings)))
     status = 0
