@@ -110,8 +110,8 @@ namespace lithostress
           "Where the depth of the lithostatic and pore pressures is "
           "measured from: fault top = the upper end of the fault's trace "
           "(on the top surface; above a buried tip, where its welded "
-          "extension meets the surface); sea level = y = 0, as FSHEAR measures both "
-          "(thesis appendix: SLITH = 2911 g y and POREP = 1000 g y with y "
+          "extension meets the surface); sea level = y = 0, as FSHEAR "
+          "measures both (thesis appendix: SLITH = 2911 g y and POREP = 1000 g y with y "
           "the coordinate below sea level), which adds the water depth "
           "above a submarine fault's trace to both.");
         prm.leave_subsection();
