@@ -111,9 +111,9 @@ namespace lithostress
           "measured from: fault top = the upper end of the fault's trace "
           "(on the top surface; above a buried tip, where its welded "
           "extension meets the surface); sea level = y = 0, as FSHEAR "
-          "measures both (thesis appendix: SLITH = 2911 g y and POREP = 1000 g y with y "
-          "the coordinate below sea level), which adds the water depth "
-          "above a submarine fault's trace to both.");
+          "measures both (thesis appendix: SLITH = 2911 g y and POREP = "
+          "1000 g y with y the coordinate below sea level), which adds the "
+          "water depth above a submarine fault's trace to both.");
         prm.leave_subsection();
       }
     prm.leave_subsection();
