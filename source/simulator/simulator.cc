@@ -479,6 +479,15 @@ namespace lithostress
     if (stress_model->has_viscous_material() && !time_stepping.enabled)
       log << "Note: the viscosities are not used (Time stepping/Enabled = "
              "false): this is the elastic response at t = 0.\n";
+    using Refinement = MeshRefinement<dim>;
+    if (faults.active() &&
+        cycles.settings().strategy == Refinement::Strategy::adaptive &&
+        cycles.settings().indicator == Refinement::Indicator::kelly)
+      log << "Note: the Kelly indicator takes the two sides of a fault (two "
+             "displacement fields) for a jump of the gradient and refines "
+             "along the fault's whole trace; Mesh refinement/Indicator = "
+             "stress recovery recovers each side's stress on its own "
+             "(doc/faults.md).\n";
     if (cycles.goals().stop_tolerance() > 0 && cycles.settings().n_cycles == 1)
       log << "Note: a single refinement cycle: Mesh refinement/Goals/Stop "
              "at relative change has no cycle to compare with.\n";
