@@ -602,9 +602,8 @@ def plot_tip_stresses(directory, settings):
     fault's extent and half as much again on every side."""
     if not os.path.exists(os.path.join(directory, "principal_stresses.csv")):
         return None
-    for _, path, _ in fault_files(directory):
-        summary_path = os.path.join(directory, os.path.basename(path).replace("fault", "fault_summary", 1)
-                                    .replace(".csv", ".json"))
+    for name, path, _ in fault_files(directory):
+        summary_path = os.path.join(directory, "fault_summary%s.json" % ("_" + name if name else ""))
         if not os.path.exists(summary_path):
             continue
         with open(summary_path) as f:

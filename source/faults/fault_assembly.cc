@@ -129,7 +129,7 @@ namespace lithostress
     const double tolerance = 1e-3;
     point.at_tip =
       (trace.buried_top() && std::abs(point.distance) < tolerance) ||
-      (std::isfinite(trace.end_s) &&
+      (trace.buried_bottom() &&
        std::abs(point.distance - (trace.end_s - trace.begin_s)) < tolerance);
     return point;
   }

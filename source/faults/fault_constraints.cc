@@ -406,7 +406,7 @@ namespace lithostress
     const bool welds =
       contact == nullptr &&
       std::any_of(faults.begin(), faults.end(), [](const Fault &fault) {
-        return fault.trace.buried_top() || std::isfinite(fault.trace.end_s);
+        return fault.trace.buried_top() || fault.trace.buried_bottom();
       });
     if (!welds && std::none_of(faults.begin(), faults.end(), which))
       return;

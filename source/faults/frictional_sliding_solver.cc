@@ -749,6 +749,8 @@ namespace lithostress
           // residual does not depend on how they are read from the
           // reactions, which on hanging fault faces is a weighted mean.
           contact_tractions(owned);
+          // (Again, after contact_tractions()'s pass: the friction limits
+          // take the tractions just read.)
           add_interface_forces(false);
           residual += force;
           condense_ties(residual);

@@ -431,6 +431,13 @@ namespace lithostress
               }
           }
       }
+    // Ends inside the mesh: welded extensions to the boundary along its
+    // edges, clear of every fault curve.
+    const MeshEdges edges = mesh_edges();
+    std::set<long>  avoid;
+    for (const auto &[tag, tag_segments] : lines)
+      for (const auto &[a, b] : tag_segments)
+        avoid.insert({a, b});
     for (FaultTrace &fault : faults)
       {
         const auto       &segments = lines[boundary_names.at(fault.name)];
@@ -441,14 +448,9 @@ namespace lithostress
         if (chain.size() != segments.size() + 1)
           throw_input_error(entry,
                             what + " is not one open line (it is in pieces)");
-        // Ends inside the mesh: welded extensions to the boundary.
-        std::set<long> avoid;
-        for (const auto &[tag, tag_segments] : lines)
-          for (const auto &[a, b] : tag_segments)
-            avoid.insert({a, b});
         const std::vector<long>
-          up   = extension_to_boundary(chain, true, avoid, what),
-          down = extension_to_boundary(chain, false, avoid, what);
+          up   = extension_to_boundary(edges, chain, true, avoid, what),
+          down = extension_to_boundary(edges, chain, false, avoid, what);
         std::vector<Point<2>> vertices;
         for (auto n = up.rbegin(); n != up.rend(); ++n)
           vertices.push_back(nodes[*n]);
@@ -489,35 +491,41 @@ namespace lithostress
   }
 
   template <int dim>
-  std::vector<long>
-  GmshMesh<dim>::extension_to_boundary(const std::vector<long> &chain,
-                                       const bool               upper,
-                                       const std::set<long>    &avoid,
-                                       const std::string       &what) const
+  typename GmshMesh<dim>::MeshEdges
+  GmshMesh<dim>::mesh_edges() const
   {
-    // The mesh's edges, and its boundary nodes (on an edge of one cell).
-    std::map<long, std::set<long>>       next;
+    MeshEdges                            edges;
     std::map<std::pair<long, long>, int> cells_at_edge;
-    std::map<long, Point<2>>             position;
     for (const FileCell &cell : file_cells)
       if (cell.checkable)
         for (unsigned int v = 0; v < 4; ++v)
           {
             const long a = cell.nodes[v], b = cell.nodes[(v + 1) % 4];
-            next[a].insert(b);
-            next[b].insert(a);
+            edges.next[a].insert(b);
+            edges.next[b].insert(a);
             ++cells_at_edge[std::minmax(a, b)];
-            position[a] = cell.corners[v];
+            edges.position[a] = cell.corners[v];
           }
-    std::set<long> boundary;
     for (const auto &[edge, count] : cells_at_edge)
       if (count == 1)
-        boundary.insert({edge.first, edge.second});
+        edges.boundary.insert({edge.first, edge.second});
+    return edges;
+  }
+
+  template <int dim>
+  std::vector<long>
+  GmshMesh<dim>::extension_to_boundary(const MeshEdges         &edges,
+                                       const std::vector<long> &chain,
+                                       const bool               upper,
+                                       const std::set<long>    &avoid,
+                                       const std::string       &what) const
+  {
+    const auto &[next, boundary, position] = edges;
     long node = upper ? chain.front() : chain.back();
     if (next.count(node) == 0 || boundary.count(node) != 0)
       return {};
     const long   from    = upper ? chain[1] : chain[chain.size() - 2];
-    Tensor<1, 2> heading = position[node] - position[from];
+    Tensor<1, 2> heading = position.at(node) - position.at(from);
     // Onwards along the edge that turns least, until the boundary.
     std::vector<long> extension;
     std::set<long>    visited(chain.begin(), chain.end());
@@ -525,11 +533,11 @@ namespace lithostress
       {
         long   best        = -1;
         double straightest = 0.5;
-        for (const long n : next[node])
+        for (const long n : next.at(node))
           {
             if (visited.count(n) != 0 || avoid.count(n) != 0)
               continue;
-            const Tensor<1, 2> step = position[n] - position[node];
+            const Tensor<1, 2> step = position.at(n) - position.at(node);
             const double       cosine =
               step * heading / (step.norm() * heading.norm());
             if (cosine > straightest)
@@ -542,14 +550,14 @@ namespace lithostress
           {
             std::ostringstream where;
             where << what << "'s " << (upper ? "upper" : "lower") << " end at ("
-                  << position[node] / scale
+                  << position.at(node) / scale
                   << ") lies inside the mesh, and the mesh has no edges that "
                      "continue the fault to the boundary (within 60 degrees "
                      "of its direction, clear of other faults): add them, or "
                      "draw the fault to the boundary";
             throw_input_error("Geometry/Gmsh/Fault curves", where.str());
           }
-        heading = position[best] - position[node];
+        heading = position.at(best) - position.at(node);
         visited.insert(best);
         extension.push_back(best);
         node = best;

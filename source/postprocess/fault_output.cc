@@ -110,7 +110,7 @@ namespace lithostress
     // last lie on the fault's ends.
     if (trace.buried_top() && !samples.empty())
       summary.upper_tip_depth_m = samples.front().depth;
-    if (std::isfinite(trace.end_s) && !samples.empty())
+    if (trace.buried_bottom() && !samples.empty())
       summary.lower_tip_depth_m = samples.back().depth;
     // The vertical jump at s = 0, linear through the two shallowest points
     // at different s; a buried fault does not reach the surface.

@@ -86,6 +86,13 @@ namespace lithostress
       return begin_s > 0;
     }
 
+    /** Whether the fault ends inside the body below (a buried lower tip). */
+    bool
+    buried_bottom() const
+    {
+      return end_s < std::numeric_limits<double>::infinity();
+    }
+
     /** Whether the point @p p of the trace lies on the fault's own part
      * (within @p tolerance [m] of it), not on its welded extension. */
     bool

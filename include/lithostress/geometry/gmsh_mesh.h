@@ -6,6 +6,7 @@
 #include <lithostress/geometry/geometry_model.h>
 #include <lithostress/geometry/mesh_check.h>
 
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -63,14 +64,29 @@ namespace lithostress
     void
     read_fault_curves(const std::map<std::string, Point<dim>> &centres);
 
+    /** The edges of the file's quadrilaterals: each node's neighbours,
+     * the nodes on the boundary (on an edge of one cell) and every node's
+     * position [m]. */
+    struct MeshEdges
+    {
+      std::map<long, std::set<long>> next;
+      std::set<long>                 boundary;
+      std::map<long, Point<2>>       position;
+    };
+
+    /** The edges of `file_cells`. */
+    MeshEdges
+    mesh_edges() const;
+
     /** The nodes that continue the fault curve @p chain (its node
      * numbers from the upper end down) from its upper (@p upper) or lower
-     * end to the boundary along the mesh's edges, each step the edge
+     * end to the boundary along the mesh's @p edges, each step the edge
      * that turns least, avoiding the nodes @p avoid of the fault curves:
      * the welded extension beyond a buried tip (none if the end is on the
      * boundary). Throws InputError naming @p what if there is none. */
     std::vector<long>
-    extension_to_boundary(const std::vector<long> &chain,
+    extension_to_boundary(const MeshEdges         &edges,
+                          const std::vector<long> &chain,
                           const bool               upper,
                           const std::set<long>    &avoid,
                           const std::string       &what) const;
