@@ -10,6 +10,7 @@
 #include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/faults/fault_element_stresses.h>
+#include <lithostress/faults/friction_limit_coupling.h>
 #include <lithostress/faults/frictional_sliding_solver.h>
 #include <lithostress/faults/normal_contact.h>
 #include <lithostress/solvers/amg_solver.h>
@@ -104,7 +105,21 @@ namespace lithostress
                       "Eisenstat & Walker 1996): those steps are not solved "
                       "to round-off. A step whose states stood still may be "
                       "the last and is solved to the Linear solver "
-                      "tolerance; so is every step with 0.");
+                      "tolerance (unless friction limits follow contact "
+                      "reactions the tangent takes as given: Reaction in "
+                      "tangent = false); so is every step with 0.");
+    prm.declare_entry("Reaction in tangent",
+                      "true",
+                      Patterns::Bool(),
+                      "Newton in exact normal contact: the tangent includes "
+                      "the friction limit's dependence on the contact "
+                      "reaction (mu times the tie's reaction, a linear "
+                      "function of the displacement; a non-symmetric term, "
+                      "solved by GMRES), so that the iteration ends in one "
+                      "step once the states stand still. false: the "
+                      "reaction is taken as given at each iterate, a fixed "
+                      "point with Anderson acceleration (symmetric tangent, "
+                      "CG), which contracts by about 0.1 per iteration.");
     prm.declare_entry("Linear solver",
                       "automatic",
                       Patterns::Selection("automatic|AMG|direct|multigrid"),
@@ -152,16 +167,17 @@ namespace lithostress
     parameters.hold_at_limit = prm.get_bool("Hold sliding points at the limit");
     parameters.element_stresses =
       prm.get("Thesis stress reading") == "element centroids";
-    parameters.line_search      = prm.get_bool("Line search");
-    parameters.linear_tolerance = prm.get_double("Linear solver tolerance");
-    parameters.linear_reduction = prm.get_double("Linear solver reduction");
-    const std::string solver    = prm.get("Linear solver");
-    parameters.preconditioner   = solver == "direct" ? Preconditioner::direct
-                                  : solver == "AMG"  ? Preconditioner::amg
-                                  : solver == "multigrid"
-                                    ? Preconditioner::multigrid
-                                    : Preconditioner::automatic;
-    parameters.direct_limit     = prm.get_double("Direct solver limit");
+    parameters.line_search         = prm.get_bool("Line search");
+    parameters.linear_tolerance    = prm.get_double("Linear solver tolerance");
+    parameters.linear_reduction    = prm.get_double("Linear solver reduction");
+    parameters.reaction_in_tangent = prm.get_bool("Reaction in tangent");
+    const std::string solver       = prm.get("Linear solver");
+    parameters.preconditioner      = solver == "direct" ? Preconditioner::direct
+                                     : solver == "AMG"  ? Preconditioner::amg
+                                     : solver == "multigrid"
+                                       ? Preconditioner::multigrid
+                                       : Preconditioner::automatic;
+    parameters.direct_limit        = prm.get_double("Direct solver limit");
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
                         "must be positive");
@@ -404,9 +420,17 @@ namespace lithostress
       void
       accelerate_tractions(const bool restart)
       {
-        if (contact)
+        if (contact && !settings.reaction_in_tangent)
           contact->accelerate(restart);
       }
+
+      /** Exact contact with Reaction in tangent: the tangent's term for
+       * the friction limits' dependence on the reactions at u
+       * (FrictionLimitCoupling, from the return mapping of the last
+       * set_up()), and its share M u of the right-hand side; none after
+       * the elastic predictor (@p newton false). */
+      void
+      couple_friction_limits(const bool newton);
 
       /** Whether a point's state at the last evaluated iterate differs
        * from the last call's (true at the first call), on any rank. */
@@ -421,6 +445,28 @@ namespace lithostress
             newton_states[i] = responses[i].state;
           }
         return Utilities::MPI::logical_or(changed, communicator);
+      }
+
+      /** Whether a point slides in exact contact, on any rank: its
+       * friction limit then follows the contact reaction, which the
+       * tangent takes as given, so that no step is exact even while the
+       * states stand still (a fixed point in the tractions). */
+      bool
+      limits_follow_reactions() const
+      {
+        bool follows = false;
+        if (contact && !settings.reaction_in_tangent)
+          for (const auto &r : responses)
+            follows = follows || r.state == SlipState::sliding;
+        return Utilities::MPI::logical_or(follows, communicator);
+      }
+
+      /** Whether the linearised system is symmetric (exact contact
+       * without the friction limits' coupling): CG, else GMRES. */
+      bool
+      symmetric() const
+      {
+        return contact && !coupling.active();
       }
 
       /** "<n> sliding, <m> open of <N> points" over all ranks. */
@@ -484,8 +530,14 @@ namespace lithostress
        * the Linear solver tolerance (inexact Newton). */
       bool   direct  = false;
       double forcing = 0;
+      /** Whether the last linear solve went to the Linear solver
+       * tolerance (the forcing was below it). */
+      bool to_tolerance = false;
       /** Whether they are preconditioned by TwoFieldMultigrid. */
       bool use_multigrid = false;
+      /** The tangent's coupling of the friction limits to the reactions
+       * (exact contact, Reaction in tangent). */
+      FrictionLimitCoupling<dim> coupling;
       /** The iterations of the last Krylov solve. */
       unsigned int last_iterations = 0;
       /** Wall time [s] of assembly, preconditioner set-up, Krylov solves
@@ -698,9 +750,15 @@ namespace lithostress
           Tensor<1, dim>     t;
           Tensor<2, dim>     D;
           return_mapping(values, t, D);
+          // (The law solved with: the tangent, the affine part and the
+          // reaction's term, at this point's reaction now.)
+          const double reaction_term =
+            contact ? coupling.shear_change(i, contact->normal_traction(i))
+                    : 0.;
           ex = std::max(ex,
                         std::abs((t - tangents[i] * values.jump - affine[i]) *
-                                 values.point.shear));
+                                   values.point.shear -
+                                 reaction_term));
           // A closed point's normal traction acts along its tie's normal.
           if (contact && contact->exact(i) && contact->closed(i))
             t = (t * values.point.shear) * values.point.shear +
@@ -773,37 +831,11 @@ namespace lithostress
     void
     SlidingContext<dim>::condense_ties(TrilinosWrappers::MPI::Vector &r) const
     {
-      const AffineConstraints<double> &ties = linearised.constraints;
-      TrilinosWrappers::MPI::Vector    moved;
-      moved.reinit(system.locally_owned,
-                   system.locally_relevant,
-                   communicator,
-                   true);
-      std::vector<types::global_dof_index> sources;
-      std::vector<double>                  values;
-      const auto tied = [&](const types::global_dof_index i) {
-        return ties.is_constrained(i) && !constraints.is_constrained(i);
-      };
-      for (const auto i : system.locally_owned)
-        if (tied(i))
-          {
-            sources.clear();
-            values.clear();
-            for (const auto &[j, w] : *ties.get_constraint_entries(i))
-              {
-                sources.push_back(j);
-                values.push_back(w * r[i]);
-              }
-            moved.add(sources, values);
-          }
-      moved.compress(VectorOperation::add);
-      // r += moved - (the tied rows of r), written once per owned row (the
-      // same operation on every rank).
-      TrilinosWrappers::MPI::Vector change(system.locally_owned, communicator);
-      for (const auto i : system.locally_owned)
-        change[i] = moved[i] - (tied(i) ? r[i] : 0.);
-      change.compress(VectorOperation::insert);
-      r += change;
+      lithostress::condense_ties(linearised.constraints,
+                                 constraints,
+                                 system.locally_owned,
+                                 system.locally_relevant,
+                                 r);
     }
 
     template <int dim>
@@ -955,6 +987,28 @@ namespace lithostress
 
     template <int dim>
     void
+    SlidingContext<dim>::couple_friction_limits(const bool newton)
+    {
+      if (!newton || !contact || !settings.reaction_in_tangent)
+        {
+          coupling.clear();
+          return;
+        }
+      coupling.reinit(faults,
+                      dof_handler,
+                      fe_space,
+                      *contact,
+                      responses,
+                      system.matrix,
+                      linearised.constraints,
+                      system.locally_owned,
+                      system.locally_relevant);
+      // L x + M (x − u) = b: the reactions' change from u's.
+      coupling.vmult_add(rhs, u);
+    }
+
+    template <int dim>
+    void
     SlidingContext<dim>::assemble_rhs(const Law &law)
     {
       reset_rhs();
@@ -1020,7 +1074,13 @@ namespace lithostress
             data = typename Krylov::AdditionalData(100, true);
           Krylov solver(control, data);
           stop_on_signal(solver, communicator);
-          solver.solve(matrix, x, rhs, preconditioner);
+          if (coupling.active())
+            solver.solve(CoupledTangent<dim>{matrix, coupling},
+                         x,
+                         rhs,
+                         preconditioner);
+          else
+            solver.solve(matrix, x, rhs, preconditioner);
         }
       catch (const SolverControl::NoConvergence &exc)
         {
@@ -1030,7 +1090,7 @@ namespace lithostress
           rethrow_solver_failure(
             exc,
             communicator,
-            std::string(contact ? "CG" : "GMRES") + " with " +
+            std::string(symmetric() ? "CG" : "GMRES") + " with " +
               (use_multigrid ? "multigrid"
                : direct      ? "a factorisation"
                              : "AMG"),
@@ -1049,24 +1109,29 @@ namespace lithostress
       Timer        timer;
       const double target =
         std::max(settings.linear_tolerance * rhs.l2_norm(), forcing);
-      using CG    = SolverCG<TrilinosWrappers::MPI::Vector>;
-      using GMRES = SolverGMRES<TrilinosWrappers::MPI::Vector>;
-      if (use_multigrid && contact)
+      to_tolerance = forcing <= settings.linear_tolerance * rhs.l2_norm();
+      using CG     = SolverCG<TrilinosWrappers::MPI::Vector>;
+      using GMRES  = SolverGMRES<TrilinosWrappers::MPI::Vector>;
+      if (use_multigrid && symmetric())
         krylov_solve<CG>(x, target, *multigrid, 5000, false);
       else if (use_multigrid)
         krylov_solve<GMRES>(x, target, *multigrid, 5000, false);
-      else if (cholesky)
+      else if (cholesky && symmetric())
         krylov_solve<CG>(x, target, *cholesky, 5000, false);
+      else if (cholesky)
+        krylov_solve<GMRES>(x, target, *cholesky, 5000, false);
       else if (direct)
         {
           const FactorisationPreconditioner p(*factorization);
-          if (contact)
+          if (symmetric())
             krylov_solve<CG>(x, target, p, 5000, false);
           else
             krylov_solve<GMRES>(x, target, p, 5000, false);
         }
-      else if (contact)
+      else if (contact && symmetric())
         krylov_solve<CG>(x, target, amg, 5000, false);
+      else if (contact)
+        krylov_solve<GMRES>(x, target, amg, 5000, false);
       else if (!krylov_solve<GMRES>(x, target, amg, 300, true))
         {
           // ILU(0) of a sliding tangent can fail (the thrust fault).
@@ -1135,17 +1200,23 @@ namespace lithostress
         {
           // The elastic predictor (every point stuck), unless the last
           // solution's states are the guess.
-          if (c.iteration == 1 && !c.warm_start)
+          const bool predictor = c.iteration == 1 && !c.warm_start;
+          if (predictor)
             c.set_up(c.stuck_law(c.history.slip));
           else
             c.set_up([&c](const PointValues &values,
                           Tensor<1, dim>    &t,
                           Tensor<2, dim> &D) { c.newton_law(values, t, D); });
-          // Inexact while the states change; once they stand still the
-          // step may be the last one (the law is piecewise linear), and is
-          // solved to the Linear solver tolerance.
+          c.couple_friction_limits(!predictor);
+          // Inexact while the states change or the friction limits follow
+          // the reactions (each step then reduces the residual by the fixed
+          // point's contraction only); once neither holds the step may be
+          // the last one (the law is piecewise linear), and is solved to
+          // the Linear solver tolerance.
           x         = c.u;
-          c.forcing = changed ? settings.linear_reduction * c.r_norm : 0.;
+          c.forcing = changed || c.limits_follow_reactions()
+                        ? settings.linear_reduction * c.r_norm
+                        : 0.;
           c.linear_solve(x);
           step = x;
           step -= c.u;
@@ -1187,7 +1258,7 @@ namespace lithostress
           // is at the round-off of the linear solves (1.65 M DoFs on 2
           // ranks with CG + AMG: 1.04e-9, 1.03e-9, 1.03e-9 of the load).
           // Within 100 times the tolerance that is the solution.
-          if (!changed && c.forcing == 0 &&
+          if (!changed && c.to_tolerance &&
               c.excess <= settings.excess_shear_tolerance &&
               c.r_norm > 0.5 * previous_norm &&
               c.r_norm <= 100 * settings.residual_tolerance * c.f)

@@ -144,12 +144,7 @@ namespace lithostress
     // that side's jump, W the node's area.
     for (unsigned int i = 0; i < keys.size(); ++i)
       if (in_contact[i])
-        {
-          double r_n = 0;
-          for (unsigned int d = 0; d < dim; ++d)
-            r_n += residual[nodes[i][d]] * normals[i][d];
-          tractions[i] = -signs[i] * r_n / weight[nodes[i][0]];
-        }
+        tractions[i] = reaction(residual, i);
   }
 
   template <int dim>

@@ -22,6 +22,12 @@ As k_n grows the spring law tends to the exact one: the hanging wall's
 closure P/k_n is the whole difference here, so the displacement
 difference falls by a factor 10 per decade of k_n (rate 1 in 1/k_n).
 
+The friction limit's dependence on the contact reaction is in the Newton
+tangent (Reaction in tangent, the default): on the thesis's plane thrust
+(800 cells) it gives the throw of the fixed point in the reactions
+(Reaction in tangent = false) to 1e-8, and needs at most 2 iterations
+once the states stand still (the settled problem is linear).
+
 Hanging fault faces whose finer side is the footwall: the thesis's plane
 thrust (prm/thrust_fault.prm, from 200 cells) with four cycles of
 adaptive refinement (stress recovery), which refine footwall cells at the
@@ -118,11 +124,13 @@ for ranks in (1, 2):
           "opening %.1e m, slip %.9f m (d - tau_F L/G = %.9f m), largest relative difference %.1e"
           % (ranks, len(fault), -fault[0]["shear_traction"], fault[0]["normal_traction"], -P,
              max(abs(f["opening"]) for f in fault), -fault[0]["slip"], slip, worst))
-    # The friction limit takes the reaction of the last iterate (a fixed
-    # point, Anderson-accelerated; doc/faults.md): measured 7 iterations,
-    # where the spring's consistent Newton tangent needs 3.
-    check(summary["nonlinear_iterations"] <= 10,
-          "exact contact, sliding, %d rank(s): converges in %d iterations (at most 10)"
+    # The tangent has the friction limit's dependence on the reaction
+    # (FrictionLimitCoupling): the predictor, one step that changes the
+    # states (inexact), one exact step of the settled states' linear
+    # problem, and the step that confirms it: at most 4 (measured 4; the
+    # spring's consistent tangent needs 3).
+    check(summary["nonlinear_iterations"] <= 4,
+          "exact contact, sliding, %d rank(s): converges in %d Newton iterations (at most 4)"
           % (ranks, summary["nonlinear_iterations"]))
 
     out = os.path.abspath("output_contact_stuck_%d" % ranks)
@@ -177,15 +185,51 @@ check(all(abs(r - 1) < 0.05 for r in rates) and abs(differences[0] - P / 1e10) <
       "the normal spring tends to exact contact: displacement differences %s m for k_n = 1e10, "
       "1e11, 1e12 Pa/m (the closure P/k_n = %.1e m at 1e10), rate %s per decade (1 expected)"
       % (", ".join("%.2e" % d for d in differences), P / 1e10, ", ".join("%.3f" % r for r in rates)))
+
+
+def iterations_after_states_settled(out):
+    """The Newton iterations of the last solve after the last one whose
+    count of sliding or open points changed (a change that keeps the counts
+    is missed, which only lengthens what is counted)."""
+    counts = []
+    with open(os.path.join(out, "log.txt")) as f:
+        for line in f:
+            m = re.search(r"Newton iteration (\d+): .* (\d+) sliding, (\d+) open", line)
+            if m:
+                if m.group(1) == "1":
+                    counts = []
+                counts.append((int(m.group(2)), int(m.group(3))))
+    last_change = max([i for i in range(1, len(counts)) if counts[i] != counts[i - 1]] + [0])
+    return len(counts) - 1 - last_change, len(counts)
+
+
+# The friction limit's dependence on the reaction in the tangent against the
+# fixed point in the reactions (Reaction in tangent = false): the same
+# solution, both to a residual of 1e-9 of the load (throws measured 3e-10
+# apart; bound 1e-8, the agreement asked of 1 and 2 ranks), and Newton's
+# convergence once the states stand still: the settled problem is linear,
+# so one exact step and one that confirms it (measured 2, the fixed point
+# 6).
+thrust_args = ["Mesh refinement/Initial global refinement=2", "Output/Figures/Enabled=false",
+               "Output/Write ParaView files=false"]
+uniform = os.path.abspath("output_contact_thrust_uniform")
+run("../prm/thrust_fault.prm", uniform, 1, thrust_args)
+fixed_point = os.path.abspath("output_contact_thrust_fixed_point")
+run("../prm/thrust_fault.prm", fixed_point, 1,
+    thrust_args + ["Faults/Sliding solver/Reaction in tangent=false"])
+throws = [read_summary(o)["throw_m"] for o in (uniform, fixed_point)]
+(after, total), (after_fp, total_fp) = (iterations_after_states_settled(o)
+                                        for o in (uniform, fixed_point))
+check(abs(throws[0] - throws[1]) <= 1e-8 * abs(throws[1]) and after <= 2,
+      "thrust (uniform, 800 cells): the reaction in the tangent gives the fixed point's throw "
+      "(%.10f m against %.10f m) in %d Newton iterations, %d after the states settled (at most "
+      "2; the fixed point %d in %d)" % (throws[0], throws[1], total, after, after_fp, total_fp))
+
 thrust = os.path.abspath("output_contact_thrust_adaptive")
 run("../prm/thrust_fault.prm", thrust, 1,
     ["Mesh refinement/Initial global refinement=1", "Mesh refinement/Strategy=adaptive",
      "Mesh refinement/Indicator=stress recovery", "Mesh refinement/Number of cycles=4",
      "Output/Figures/Enabled=false", "Output/Write ParaView files=false"])
-uniform = os.path.abspath("output_contact_thrust_uniform")
-run("../prm/thrust_fault.prm", uniform, 1,
-    ["Mesh refinement/Initial global refinement=2", "Output/Figures/Enabled=false",
-     "Output/Write ParaView files=false"])
 balance = {r["name"]: r for r in read_csv(os.path.join(thrust, "force_balance.csv"))}
 imbalance = math.hypot(float(balance["all"]["F_x"]), float(balance["all"]["F_y"])) / 1e12
 slip, reference = (read_summary(o)["max_slip_m"] for o in (thrust, uniform))

@@ -99,6 +99,11 @@ namespace lithostress
        * Newton), if that is above linear_tolerance times its right-hand
        * side. */
       double linear_reduction = 1e-3;
+      /** Newton in exact contact: the tangent includes the friction
+       * limits' dependence on the contact reactions
+       * (FrictionLimitCoupling); false: the reactions are taken as given
+       * (a fixed point, Anderson-accelerated). */
+      bool reaction_in_tangent = true;
       /** The preconditioner of each step's Krylov solve (`Linear
        * solver`); automatic: the factorisation on one rank up to
        * direct_limit DoFs, above and on more ranks the two fields'

@@ -75,6 +75,26 @@ namespace lithostress
       return tractions[i];
     }
 
+    /** The normal traction at point @p i that @p residual's entries at
+     * its node make (−s n·r / W; ghosted @p residual): compute_tractions()
+     * for one point, and the reaction's derivative for a direction. */
+    double
+    reaction(const TrilinosWrappers::MPI::Vector &residual,
+             const unsigned int                   i) const
+    {
+      double r_n = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        r_n += residual[nodes[i][d]] * normals[i][d];
+      return -signs[i] * r_n / weight[nodes[i][0]];
+    }
+
+    /** The DoFs (x, y) whose residual reaction() reads at point @p i. */
+    const std::array<types::global_dof_index, dim> &
+    reaction_dofs(const unsigned int i) const
+    {
+      return nodes[i];
+    }
+
     /** The fault's normal at point @p i's node (its tie's normal). */
     const Tensor<1, dim> &
     normal(const unsigned int i) const
