@@ -10,8 +10,11 @@
 
 #include <lithostress/solvers/two_field_multigrid.h>
 
+#include <EpetraExt_MatrixMatrix.h>
+
 #include <cmath>
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 
@@ -197,6 +200,77 @@ namespace lithostress
 
   template <int dim>
   void
+  TwoFieldMultigrid<dim>::galerkin_product(const Matrix &a,
+                                           const Matrix &p,
+                                           Matrix       &result)
+  {
+    if (Utilities::MPI::n_mpi_processes(a.get_mpi_communicator()) == 1)
+      {
+        // deal.II's products (ML's): 3.7 times faster than EpetraExt's
+        // here (thrust fault, 416 k DoFs: 5.8 s of set-ups against 21 s).
+        Matrix ap;
+        a.mmult(ap, p);
+        p.Tmmult(result, ap);
+        return;
+      }
+    // On several ranks EpetraExt's products: deal.II's Tmmult (ML's) wrote
+    // past an allocation there (the subduction coupling's third
+    // goal-oriented mesh on 2 ranks; valgrind).
+    const Epetra_CrsMatrix &ae = a.trilinos_matrix();
+    const Epetra_CrsMatrix &pe = p.trilinos_matrix();
+    Epetra_CrsMatrix        ap(Copy, ae.RowMap(), 0);
+    int error = EpetraExt::MatrixMatrix::Multiply(ae, false, pe, false, ap);
+    AssertThrow(error == 0, ExcTrilinosError(error));
+    Epetra_CrsMatrix ptap(Copy, pe.DomainMap(), 0);
+    error = EpetraExt::MatrixMatrix::Multiply(pe, true, ap, false, ptap);
+    AssertThrow(error == 0, ExcTrilinosError(error));
+    // Copied into a pattern of its own, with every row's diagonal (a DoF no
+    // coarse function reaches has an empty row): copying the product's
+    // graph (SparseMatrix::reinit(Epetra_CrsMatrix)) wrote past its
+    // allocation on 2 ranks.
+    const Epetra_Map &rows = ptap.RowMap();
+    const Epetra_Map &cols = ptap.ColMap();
+    IndexSet          owned_rows(pe.NumGlobalCols());
+    for (int i = 0; i < rows.NumMyElements(); ++i)
+      owned_rows.add_index(rows.GID(i));
+    owned_rows.compress();
+    std::vector<std::vector<types::global_dof_index>> columns(
+      rows.NumMyElements());
+    std::vector<std::vector<double>> values(rows.NumMyElements());
+    // (Indexed by the global row.)
+    std::vector<types::global_dof_index> lengths(pe.NumGlobalCols(), 0);
+    for (int i = 0; i < rows.NumMyElements(); ++i)
+      {
+        int     n = 0;
+        double *v = nullptr;
+        int    *c = nullptr;
+        ptap.ExtractMyRowView(i, n, v, c);
+        std::map<types::global_dof_index, double> row{{rows.GID(i), 0.}};
+        for (int e = 0; e < n; ++e)
+          row[cols.GID(c[e])] += v[e];
+        for (const auto &[column, value] : row)
+          {
+            columns[i].push_back(column);
+            values[i].push_back(value);
+          }
+        lengths[rows.GID(i)] = columns[i].size();
+      }
+    TrilinosWrappers::SparsityPattern pattern;
+    pattern.reinit(owned_rows, owned_rows, a.get_mpi_communicator(), lengths);
+    for (int i = 0; i < rows.NumMyElements(); ++i)
+      pattern.add_entries(rows.GID(i),
+                          columns[i].begin(),
+                          columns[i].end(),
+                          true);
+    pattern.compress();
+    result.reinit(pattern);
+    for (int i = 0; i < rows.NumMyElements(); ++i)
+      result.set(rows.GID(i), columns[i], values[i]);
+    result.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  void
   TwoFieldMultigrid<dim>::make_hierarchy(const DoFHandler<dim> &dof_handler,
                                          const hp::FECollection<dim> &fe)
   {
@@ -361,10 +435,10 @@ namespace lithostress
     for (unsigned int level = finest; level > 0; --level)
       {
         const Matrix &fine = level == finest ? matrix : *level_matrices[level];
-        Matrix        fine_times_p;
-        fine.mmult(fine_times_p, *prolongations[level]);
         level_matrices[level - 1] = std::make_unique<Matrix>();
-        prolongations[level]->Tmmult(*level_matrices[level - 1], fine_times_p);
+        galerkin_product(fine,
+                         *prolongations[level],
+                         *level_matrices[level - 1]);
       }
     const auto level_matrix = [&](const unsigned int level) -> const Matrix & {
       return level == finest ? matrix : *level_matrices[level];
@@ -391,7 +465,7 @@ namespace lithostress
         Vector inverse_diagonal(residuals[level]);
         for (const auto i : inverse_diagonal.locally_owned_elements())
           {
-            const double d      = a.diag_element(i);
+            const double d      = a.el(i, i);
             inverse_diagonal[i] = d != 0 ? 1. / d : 0.;
           }
         inverse_diagonal.compress(VectorOperation::insert);

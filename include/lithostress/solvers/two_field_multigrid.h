@@ -131,6 +131,10 @@ namespace lithostress
                       const Transfers                 &rows,
                       const AffineConstraints<double> &fine_constraints);
 
+    /** @p result := @p pᵀ @p a @p p (the Galerkin coarse operator). */
+    static void
+    galerkin_product(const Matrix &a, const Matrix &p, Matrix &result);
+
     void
     v_cycle(const unsigned int level, Vector &x, const Vector &b) const;
 
