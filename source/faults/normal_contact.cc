@@ -7,6 +7,43 @@
 
 namespace lithostress
 {
+  void
+  condense_ties(const AffineConstraints<double> &ties,
+                const AffineConstraints<double> &constraints,
+                const IndexSet                  &locally_owned,
+                const IndexSet                  &locally_relevant,
+                TrilinosWrappers::MPI::Vector   &r)
+  {
+    const MPI_Comm                communicator = r.get_mpi_communicator();
+    TrilinosWrappers::MPI::Vector moved;
+    moved.reinit(locally_owned, locally_relevant, communicator, true);
+    std::vector<types::global_dof_index> sources;
+    std::vector<double>                  values;
+    const auto tied = [&](const types::global_dof_index i) {
+      return ties.is_constrained(i) && !constraints.is_constrained(i);
+    };
+    for (const auto i : locally_owned)
+      if (tied(i))
+        {
+          sources.clear();
+          values.clear();
+          for (const auto &[j, w] : *ties.get_constraint_entries(i))
+            {
+              sources.push_back(j);
+              values.push_back(w * r[i]);
+            }
+          moved.add(sources, values);
+        }
+    moved.compress(VectorOperation::add);
+    // r += moved - (the tied rows of r), written once per owned row (the
+    // same operation on every rank).
+    TrilinosWrappers::MPI::Vector change(locally_owned, communicator);
+    for (const auto i : locally_owned)
+      change[i] = moved[i] - (tied(i) ? r[i] : 0.);
+    change.compress(VectorOperation::insert);
+    r += change;
+  }
+
   namespace
   {
     /** The bulk of @p problem (cells and loads, with its history strain)

@@ -8,6 +8,7 @@
 #include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/rigid_body_modes.h>
 #include <lithostress/solvers/sparse_cholesky.h>
+#include <lithostress/solvers/two_field_multigrid.h>
 
 #include <memory>
 
@@ -19,17 +20,25 @@ namespace lithostress
      * The dual problems' operator where the faults need the sliding
      * solver: the bulk with the stuck (elastic) face terms of every fault
      * and, in exact contact, every node closed (NormalContact's ties). In
-     * exact contact it is symmetric and without stiff springs: its sparse
-     * Cholesky factor on one rank, CG with the elasticity AMG on more;
-     * with the thesis's normal spring a sparse LU factorisation. Either
-     * factorisation is made once for all goals.
+     * exact contact it is symmetric and without stiff springs, and takes
+     * the preconditioner the sliding steps take
+     * (FrictionalSlidingSolver::chosen_preconditioner): the sparse
+     * Cholesky factor on one rank, the two fields' multigrid or the
+     * elasticity AMG for CG. With the thesis's normal spring, and with a
+     * factorisation asked for on several ranks, a sparse LU
+     * factorisation. Any of them is made once for all goals.
      */
     template <int dim>
     class StuckInterfaceOperator
     {
     public:
-      StuckInterfaceOperator(const DiscreteProblem<dim> &problem,
-                             const FaultInterface<dim>  &faults)
+      using Preconditioner =
+        typename FrictionalSlidingSolver<dim>::Preconditioner;
+
+      StuckInterfaceOperator(
+        const DiscreteProblem<dim>                            &problem,
+        const FaultInterface<dim>                             &faults,
+        const typename FrictionalSlidingSolver<dim>::Settings &settings)
           : faults(faults)
           , problem(problem)
       {
@@ -54,15 +63,35 @@ namespace lithostress
             stuck.matrix.copy_from(system.matrix);
           }
         add_stuck_face_terms();
-        // Exact contact leaves the stuck tangent symmetric: on one rank its
-        // Cholesky factor, on more the AMG.
-        if (faults.contact() && Utilities::MPI::n_mpi_processes(
-                                  problem.dof_handler.get_communicator()) == 1)
+        const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(
+          problem.dof_handler.get_communicator());
+        const Preconditioner chosen =
+          faults.contact()
+            ? FrictionalSlidingSolver<dim>::chosen_preconditioner(
+                settings, true, problem.dof_handler.n_dofs(), n_ranks)
+            : Preconditioner::direct;
+        if (chosen == Preconditioner::direct && n_ranks == 1 &&
+            faults.contact())
           {
             cholesky = std::make_unique<SparseCholesky>();
             cholesky->factorize(stuck.matrix);
           }
-        else if (faults.contact())
+        else if (chosen == Preconditioner::direct)
+          {
+            control = std::make_unique<SolverControl>(1, 0);
+            direct = std::make_unique<TrilinosWrappers::SolverDirect>(*control);
+            direct->initialize(stuck.matrix);
+          }
+        else if (chosen == Preconditioner::multigrid)
+          {
+            multigrid = std::make_unique<TwoFieldMultigrid<dim>>();
+            multigrid->make_hierarchy(problem.dof_handler,
+                                      problem.fe_space.fe_collection());
+            multigrid->initialize(stuck.matrix,
+                                  stuck.constraints,
+                                  typename TwoFieldMultigrid<dim>::Settings());
+          }
+        else
           {
             modes =
               make_rigid_body_modes(problem.dof_handler,
@@ -73,12 +102,6 @@ namespace lithostress
                                            *modes,
                                            typename AMGSolver<dim>::Settings(),
                                            true);
-          }
-        else
-          {
-            control = std::make_unique<SolverControl>(1, 0);
-            direct = std::make_unique<TrilinosWrappers::SolverDirect>(*control);
-            direct->initialize(stuck.matrix);
           }
       }
 
@@ -94,9 +117,10 @@ namespace lithostress
       std::string
       name() const
       {
-        return cholesky           ? "Cholesky (dual, contact)"
-               : faults.contact() ? "CG with AMG (dual, contact)"
-                                  : "direct (dual)";
+        return cholesky    ? "Cholesky (dual, contact)"
+               : direct    ? "direct (dual)"
+               : multigrid ? "CG with the two fields' multigrid (dual, contact)"
+                           : "CG with AMG (dual, contact)";
       }
 
       /** The constraints of the dual problems. */
@@ -133,15 +157,19 @@ namespace lithostress
         try
           {
             SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-            cg.solve(stuck.matrix, z, rhs, amg);
+            if (multigrid)
+              cg.solve(stuck.matrix, z, rhs, *multigrid);
+            else
+              cg.solve(stuck.matrix, z, rhs, amg);
           }
         catch (const SolverControl::NoConvergence &exc)
           {
             rethrow_solver_failure(exc,
                                    problem.dof_handler.get_communicator(),
-                                   "CG with AMG (dual problems)",
+                                   name(),
                                    rhs.l2_norm(),
-                                   "use Mesh refinement/Indicator = "
+                                   "use Faults/Sliding solver/Linear solver "
+                                   "= direct, or Mesh refinement/Indicator = "
                                    "Kelly");
           }
         return control.last_step();
@@ -178,16 +206,19 @@ namespace lithostress
       std::unique_ptr<SolverControl>                  control;
       std::unique_ptr<TrilinosWrappers::SolverDirect> direct;
       std::unique_ptr<SparseCholesky>                 cholesky;
+      std::unique_ptr<TwoFieldMultigrid<dim>>         multigrid;
     };
   } // namespace
 
   template <int dim>
   std::vector<TrilinosWrappers::MPI::Vector>
-  solve_dual_problems(const StressGoals<dim>     &goals,
-                      const DiscreteProblem<dim> &problem,
-                      LinearSolver<dim>          &linear_solver,
-                      const FaultInterface<dim>  &faults,
-                      SolverReport               &report)
+  solve_dual_problems(
+    const StressGoals<dim>                                &goals,
+    const DiscreteProblem<dim>                            &problem,
+    LinearSolver<dim>                                     &linear_solver,
+    const FaultInterface<dim>                             &faults,
+    const typename FrictionalSlidingSolver<dim>::Settings &sliding_settings,
+    SolverReport                                          &report)
   {
     LinearSystem<dim> &system       = problem.system;
     const MPI_Comm     communicator = problem.dof_handler.get_communicator();
@@ -204,7 +235,7 @@ namespace lithostress
 
     // Faults that the sliding solver handles: their stuck operator, with
     // exact contact's ties at every node.
-    StuckInterfaceOperator<dim> stuck(problem, faults);
+    StuckInterfaceOperator<dim> stuck(problem, faults, sliding_settings);
     if (stuck.active())
       {
         report.solver = stuck.name();
@@ -255,5 +286,6 @@ namespace lithostress
                          const DiscreteProblem<2> &,
                          LinearSolver<2> &,
                          const FaultInterface<2> &,
+                         const FrictionalSlidingSolver<2>::Settings &,
                          SolverReport &);
 } // namespace lithostress

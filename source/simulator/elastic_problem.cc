@@ -238,8 +238,12 @@ namespace lithostress
   ElasticProblem<dim>::solve_dual_problems(const StressGoals<dim> &goals,
                                            SolverReport           &report)
   {
-    return lithostress::solve_dual_problems(
-      goals, discrete_problem(), *solver, model.faults, report);
+    return lithostress::solve_dual_problems(goals,
+                                            discrete_problem(),
+                                            *solver,
+                                            model.faults,
+                                            sliding_solver.settings(),
+                                            report);
   }
 
   template class ElasticProblem<2>;

@@ -12,6 +12,8 @@
 
 #include <EpetraExt_MatrixMatrix.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <functional>
 #include <map>
@@ -200,11 +202,13 @@ namespace lithostress
 
   template <int dim>
   void
-  TwoFieldMultigrid<dim>::galerkin_product(const Matrix &a,
-                                           const Matrix &p,
-                                           Matrix       &result)
+  TwoFieldMultigrid<dim>::galerkin_product(const Matrix   &a,
+                                           const Matrix   &p,
+                                           const IndexSet &coarse_owned,
+                                           Matrix         &result)
   {
-    if (Utilities::MPI::n_mpi_processes(a.get_mpi_communicator()) == 1)
+    const MPI_Comm communicator = a.get_mpi_communicator();
+    if (Utilities::MPI::n_mpi_processes(communicator) == 1)
       {
         // deal.II's products (ML's): 3.7 times faster than EpetraExt's
         // here (thrust fault, 416 k DoFs: 5.8 s of set-ups against 21 s).
@@ -213,60 +217,59 @@ namespace lithostress
         p.Tmmult(result, ap);
         return;
       }
-    // On several ranks EpetraExt's products: deal.II's Tmmult (ML's) wrote
-    // past an allocation there (the subduction coupling's third
-    // goal-oriented mesh on 2 ranks; valgrind).
+    // On several ranks EpetraExt's products, copied into a pattern of our
+    // own: deal.II's Tmmult (ML's) wrote past an allocation there (the
+    // subduction coupling's third goal-oriented mesh on 2 ranks;
+    // valgrind), and so did copying a product's graph
+    // (SparseMatrix::reinit(Epetra_CrsMatrix)). ML's own triple product
+    // (ML_Epetra_PtAP) numbers the columns of these products differently
+    // from the coarse level's DoFs: its entries were wrong.
     const Epetra_CrsMatrix &ae = a.trilinos_matrix();
     const Epetra_CrsMatrix &pe = p.trilinos_matrix();
     Epetra_CrsMatrix        ap(Copy, ae.RowMap(), 0);
     int error = EpetraExt::MatrixMatrix::Multiply(ae, false, pe, false, ap);
     AssertThrow(error == 0, ExcTrilinosError(error));
-    Epetra_CrsMatrix ptap(Copy, pe.DomainMap(), 0);
-    error = EpetraExt::MatrixMatrix::Multiply(pe, true, ap, false, ptap);
+    const auto ptap =
+      std::make_unique<Epetra_CrsMatrix>(Copy, pe.DomainMap(), 0);
+    error = EpetraExt::MatrixMatrix::Multiply(pe, true, ap, false, *ptap);
     AssertThrow(error == 0, ExcTrilinosError(error));
-    // Copied into a pattern of its own, with every row's diagonal (a DoF no
-    // coarse function reaches has an empty row): copying the product's
-    // graph (SparseMatrix::reinit(Epetra_CrsMatrix)) wrote past its
-    // allocation on 2 ranks.
-    const Epetra_Map &rows = ptap.RowMap();
-    const Epetra_Map &cols = ptap.ColMap();
-    IndexSet          owned_rows(pe.NumGlobalCols());
+    const Epetra_Map &rows = ptap->RowMap();
+    const Epetra_Map &cols = ptap->ColMap();
+    // Every row's diagonal, which a DoF no coarse function reaches lacks
+    // (the lengths indexed by the global row, as deal.II reads them).
+    std::vector<types::global_dof_index> lengths(coarse_owned.size(), 0);
     for (int i = 0; i < rows.NumMyElements(); ++i)
-      owned_rows.add_index(rows.GID(i));
-    owned_rows.compress();
-    std::vector<std::vector<types::global_dof_index>> columns(
-      rows.NumMyElements());
-    std::vector<std::vector<double>> values(rows.NumMyElements());
-    // (Indexed by the global row.)
-    std::vector<types::global_dof_index> lengths(pe.NumGlobalCols(), 0);
+      lengths[rows.GID(i)] = ptap->NumMyEntries(i) + 1;
+    TrilinosWrappers::SparsityPattern pattern;
+    pattern.reinit(coarse_owned, coarse_owned, communicator, lengths);
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    const auto                           row = [&](const int i) {
+      int     n = 0;
+      double *v = nullptr;
+      int    *c = nullptr;
+      ptap->ExtractMyRowView(i, n, v, c);
+      columns.assign(1, rows.GID(i));
+      values.assign(1, 0.);
+      for (int e = 0; e < n; ++e)
+        {
+          columns.push_back(cols.GID(c[e]));
+          values.push_back(v[e]);
+        }
+    };
     for (int i = 0; i < rows.NumMyElements(); ++i)
       {
-        int     n = 0;
-        double *v = nullptr;
-        int    *c = nullptr;
-        ptap.ExtractMyRowView(i, n, v, c);
-        std::map<types::global_dof_index, double> row{{rows.GID(i), 0.}};
-        for (int e = 0; e < n; ++e)
-          row[cols.GID(c[e])] += v[e];
-        for (const auto &[column, value] : row)
-          {
-            columns[i].push_back(column);
-            values[i].push_back(value);
-          }
-        lengths[rows.GID(i)] = columns[i].size();
+        row(i);
+        pattern.add_entries(rows.GID(i), columns.begin(), columns.end());
       }
-    TrilinosWrappers::SparsityPattern pattern;
-    pattern.reinit(owned_rows, owned_rows, a.get_mpi_communicator(), lengths);
-    for (int i = 0; i < rows.NumMyElements(); ++i)
-      pattern.add_entries(rows.GID(i),
-                          columns[i].begin(),
-                          columns[i].end(),
-                          true);
     pattern.compress();
     result.reinit(pattern);
     for (int i = 0; i < rows.NumMyElements(); ++i)
-      result.set(rows.GID(i), columns[i], values[i]);
-    result.compress(VectorOperation::insert);
+      {
+        row(i);
+        result.add(rows.GID(i), columns, values, false);
+      }
+    result.compress(VectorOperation::add);
   }
 
   template <int dim>
@@ -438,6 +441,7 @@ namespace lithostress
         level_matrices[level - 1] = std::make_unique<Matrix>();
         galerkin_product(fine,
                          *prolongations[level],
+                         owned[level - 1],
                          *level_matrices[level - 1]);
       }
     const auto level_matrix = [&](const unsigned int level) -> const Matrix & {

@@ -126,25 +126,31 @@ check(max(abs(p / mean - 1) for p in per_step) <= 0.3,
 # the subduction coupling (prm/subduction_coupling.prm, elastic) with its
 # goal-oriented refinement to 16 798 DoFs, whose Galerkin products once
 # wrote past an allocation on 2 ranks (deal.II's transposed product; now
-# EpetraExt's there). The 2-rank multigrid must give 1 rank's factorisation
-# the same slip, throw and meshes (both Newton runs stop at 1e-9 of the
-# load: 1e-8 as above).
+# ML's triple product there). The dual problems take the sliding steps'
+# preconditioner: 1 rank's factorisation, the multigrid on 2 ranks, and on
+# 1 rank with Linear solver = multigrid. Each must give the factorisation's
+# meshes, slip and throw (every Newton run stops at 1e-9 of the load, the
+# dual solves at 1e-10: 1e-8 as above).
 coupling = {}
-for ranks in (1, 2):
-    out = os.path.abspath("output_coupling_%d" % ranks)
+for name, ranks, extra in (("direct", 1, []), ("2 ranks", 2, []),
+                           ("multigrid", 1, ["Faults/Sliding solver/Linear solver=multigrid"])):
+    out = os.path.abspath("output_coupling_%s" % name.replace(" ", "_"))
     run(os.path.join(ROOT, "prm", "subduction_coupling.prm"), out, ranks,
-        QUIET[:2] + ["Time stepping/Enabled=false"])
+        QUIET[:2] + ["Time stepping/Enabled=false"] + extra)
     with open(os.path.join(out, "fault_summary.json")) as f:
-        coupling[ranks] = json.load(f)
-    coupling[ranks]["fault"] = read_csv(os.path.join(out, "fault.csv"))
+        coupling[name] = json.load(f)
+    coupling[name]["fault"] = read_csv(os.path.join(out, "fault.csv"))
     with open(os.path.join(out, "statistics.json")) as f:
-        coupling[ranks]["dofs"] = json.load(f)["dofs"]
-worst = largest_difference(coupling[1]["fault"], coupling[2]["fault"], ["slip"])
-check(coupling[1]["dofs"] == coupling[2]["dofs"] and
-      len(coupling[1]["fault"]) == len(coupling[2]["fault"]) and worst <= TOLERANCE and
-      abs(coupling[2]["throw_m"] - coupling[1]["throw_m"]) <= TOLERANCE * abs(coupling[1]["throw_m"]),
-      "subduction coupling, goal-oriented to %d DoFs: the multigrid on 2 ranks gives the "
-      "factorisation's slip on 1 rank to %.1e and its throw (%.8f m against %.8f m)"
-      % (coupling[2]["dofs"], worst, coupling[2]["throw_m"], coupling[1]["throw_m"]))
+        coupling[name]["dofs"] = json.load(f)["dofs"]
+for name in ("2 ranks", "multigrid"):
+    worst = largest_difference(coupling["direct"]["fault"], coupling[name]["fault"], ["slip"])
+    check(coupling["direct"]["dofs"] == coupling[name]["dofs"] and
+          len(coupling["direct"]["fault"]) == len(coupling[name]["fault"]) and worst <= TOLERANCE and
+          abs(coupling[name]["throw_m"] - coupling["direct"]["throw_m"])
+          <= TOLERANCE * abs(coupling["direct"]["throw_m"]),
+          "subduction coupling, goal-oriented to %d DoFs (%s): the multigrid gives the "
+          "factorisation's meshes, slip to %.1e and throw (%.8f m against %.8f m)"
+          % (coupling[name]["dofs"], name, worst, coupling[name]["throw_m"],
+             coupling["direct"]["throw_m"]))
 
 finish()

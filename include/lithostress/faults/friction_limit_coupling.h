@@ -19,19 +19,6 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * @p r := Cᵀ @p r for exact contact's ties: each tied row's entry added
-   * to the DoFs its tie in @p ties takes it from, with the tie's weights,
-   * and the tied row zeroed. Rows constrained by the problem's own
-   * @p constraints (which @p ties contains) are left as they are.
-   */
-  void
-  condense_ties(const AffineConstraints<double> &ties,
-                const AffineConstraints<double> &constraints,
-                const IndexSet                  &locally_owned,
-                const IndexSet                  &locally_relevant,
-                TrilinosWrappers::MPI::Vector   &r);
-
-  /**
    * The Newton tangent's term for the friction limit's dependence on the
    * contact reaction, in exact normal contact (doc/faults.md, "Exact
    * normal contact"): a closed point that slides carries the shear

@@ -115,6 +115,22 @@ namespace lithostress
     FrictionalSlidingSolver();
     ~FrictionalSlidingSolver();
 
+    /**
+     * The preconditioner `automatic` stands for, for a model of
+     * @p n_dofs DoFs on @p n_ranks ranks, in exact contact or not
+     * (@p contact): the factorisation on one rank up to the Direct solver
+     * limit; above it and on several ranks the two fields' multigrid in
+     * exact contact, the AMG with the thesis's normal spring (whose stiff
+     * pairs the multigrid's point smoother does not damp). Any other
+     * choice is returned as it is. The sliding steps and the dual problems
+     * of goal-oriented refinement take the same.
+     */
+    static Preconditioner
+    chosen_preconditioner(const Settings               &settings,
+                          const bool                    contact,
+                          const types::global_dof_index n_dofs,
+                          const unsigned int            n_ranks);
+
     /** Declare `Faults/Sliding solver`: the method, its tolerances and
      * the linear solver of each step (thesis §5.5). */
     static void

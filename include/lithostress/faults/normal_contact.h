@@ -201,6 +201,19 @@ namespace lithostress
      * first (the same on every rank, also on one without points). */
     int accelerated = -1;
   };
+
+  /**
+   * @p r := Cᵀ @p r for exact contact's ties: each tied row's entry added
+   * to the DoFs its tie in @p ties takes it from, with the tie's weights,
+   * and the tied row zeroed. Rows constrained by the problem's own
+   * @p constraints (which @p ties contains) are left as they are.
+   */
+  void
+  condense_ties(const AffineConstraints<double> &ties,
+                const AffineConstraints<double> &constraints,
+                const IndexSet                  &locally_owned,
+                const IndexSet                  &locally_relevant,
+                TrilinosWrappers::MPI::Vector   &r);
 } // namespace lithostress
 
 #endif

@@ -131,9 +131,13 @@ namespace lithostress
                       const Transfers                 &rows,
                       const AffineConstraints<double> &fine_constraints);
 
-    /** @p result := @p pᵀ @p a @p p (the Galerkin coarse operator). */
+    /** @p result := @p pᵀ @p a @p p (the Galerkin coarse operator), whose
+     * rows this rank owns are @p coarse_owned. */
     static void
-    galerkin_product(const Matrix &a, const Matrix &p, Matrix &result);
+    galerkin_product(const Matrix   &a,
+                     const Matrix   &p,
+                     const IndexSet &coarse_owned,
+                     Matrix         &result);
 
     void
     v_cycle(const unsigned int level, Vector &x, const Vector &b) const;
