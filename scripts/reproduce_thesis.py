@@ -438,8 +438,8 @@ def reading_explanations(statements, ours):
              "stress (rho g h at the base), not to their own exact values: up to %.3g %% "
              "(doc/thesis_comparison.md#the-lithostatic-column-with-nine-node-csts-442)"),
         ("plate_coupling_ks_1e9", "near_surface_horizontal_compression_trench_to_arc"):
-            (ours.get(("plate_coupling_ks_1e9",
-                       "near_surface_compression_at_thesis_gauss_points")),
+            (ours.get(("gauss_point_reading",
+                       "plate_coupling_ks_1e9_near_surface_compression")),
              "reading: the thesis's program reads stresses at Gauss points; at those of a 5 km "
              "top row of elements (1.06 and 3.94 km below the surface, the row §7.6.2's failure "
              "depth implies) the largest compression is %.3g MPa; in the top 1 km it is ours "
@@ -556,9 +556,9 @@ SUBDUCTION = {
          "(deviatoric, right edge, 0-35 km), k_s 1e9", 1),
     ("plate_coupling_ks_1e9", "near_surface_horizontal_compression_trench_to_arc"):
         ("coupling (elastic)", "near-surface compression between the trench and 700 km", 1),
-    # Not a statement: the same read at the thesis's top-row Gauss points,
-    # for reading_explanations().
-    ("plate_coupling_ks_1e9", "near_surface_compression_at_thesis_gauss_points"):
+    # Not a statement (an experiment outside the catalogue): the same read
+    # at the thesis's top-row Gauss points, for reading_explanations().
+    ("gauss_point_reading", "plate_coupling_ks_1e9_near_surface_compression"):
         ("coupling (elastic)", "the same at the thesis's top-row Gauss points", 1),
     ("basal_shear_3p5MPa", "regional_horizontal_compression_subducting_plate_elastic"):
         ("basal_shear (elastic)", "mean horizontal stress in the subducting plate at the left edge", -1),
