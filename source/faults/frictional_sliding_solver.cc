@@ -139,7 +139,9 @@ namespace lithostress
                       "fields with Galerkin coarse operators (exact contact); "
                       "automatic = direct on one rank up to Direct solver "
                       "limit DoFs, else multigrid in exact contact and AMG "
-                      "with the normal spring.");
+                      "with the normal spring. The goal-oriented dual "
+                      "problems take the same in exact contact (KLU with "
+                      "the normal spring).");
     prm.declare_entry("Direct solver limit",
                       "2e6",
                       Patterns::Double(0),
