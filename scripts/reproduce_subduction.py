@@ -124,16 +124,17 @@ def largest_compression_at_depth(n, x_range_km, depth_km):
     overlying plate's surface over @p x_range_km: sigma_xx interpolated
     linearly in depth along each vertical line of output nodes that
     brackets that depth."""
-    x, y, s = n["x"], n["y"], n["stress"][:, 0]
-    inside = (x > x_range_km[0] * 1e3) & (x < x_range_km[1] * 1e3)
+    inside = (n["x"] > x_range_km[0] * 1e3) & (n["x"] < x_range_km[1] * 1e3)
+    x, s = n["x"][inside], n["stress"][:, 0][inside]
+    depth = (land_surface_y(x) - n["y"][inside]) / 1e3
+    # The nodes by vertical line, each line by depth.
+    order = np.lexsort((depth, x))
+    x, depth, s = x[order], depth[order], s[order]
+    starts = np.flatnonzero(np.r_[True, x[1:] != x[:-1], True])
     largest = 0.0
-    for xv in np.unique(x[inside]):
-        line = inside & (x == xv)
-        depth = (land_surface_y(xv) - y[line]) / 1e3
-        order = np.argsort(depth)
-        depth, stress = depth[order], s[line][order]
-        if len(depth) >= 2 and depth[0] <= depth_km <= depth[-1]:
-            largest = max(largest, -np.interp(depth_km, depth, stress))
+    for a, b in zip(starts[:-1], starts[1:]):
+        if b - a >= 2 and depth[a] <= depth_km <= depth[b - 1]:
+            largest = max(largest, -np.interp(depth_km, depth[a:b], s[a:b]))
     return largest
 
 

@@ -12,11 +12,8 @@
 
 #include <EpetraExt_MatrixMatrix.h>
 
-#include <algorithm>
-
 #include <cmath>
 #include <functional>
-#include <map>
 #include <set>
 #include <string>
 
@@ -229,17 +226,16 @@ namespace lithostress
     Epetra_CrsMatrix        ap(Copy, ae.RowMap(), 0);
     int error = EpetraExt::MatrixMatrix::Multiply(ae, false, pe, false, ap);
     AssertThrow(error == 0, ExcTrilinosError(error));
-    const auto ptap =
-      std::make_unique<Epetra_CrsMatrix>(Copy, pe.DomainMap(), 0);
-    error = EpetraExt::MatrixMatrix::Multiply(pe, true, ap, false, *ptap);
+    Epetra_CrsMatrix ptap(Copy, pe.DomainMap(), 0);
+    error = EpetraExt::MatrixMatrix::Multiply(pe, true, ap, false, ptap);
     AssertThrow(error == 0, ExcTrilinosError(error));
-    const Epetra_Map &rows = ptap->RowMap();
-    const Epetra_Map &cols = ptap->ColMap();
+    const Epetra_Map &rows = ptap.RowMap();
+    const Epetra_Map &cols = ptap.ColMap();
     // Every row's diagonal, which a DoF no coarse function reaches lacks
     // (the lengths indexed by the global row, as deal.II reads them).
     std::vector<types::global_dof_index> lengths(coarse_owned.size(), 0);
     for (int i = 0; i < rows.NumMyElements(); ++i)
-      lengths[rows.GID(i)] = ptap->NumMyEntries(i) + 1;
+      lengths[rows.GID(i)] = ptap.NumMyEntries(i) + 1;
     TrilinosWrappers::SparsityPattern pattern;
     pattern.reinit(coarse_owned, coarse_owned, communicator, lengths);
     std::vector<types::global_dof_index> columns;
@@ -248,7 +244,7 @@ namespace lithostress
       int     n = 0;
       double *v = nullptr;
       int    *c = nullptr;
-      ptap->ExtractMyRowView(i, n, v, c);
+      ptap.ExtractMyRowView(i, n, v, c);
       columns.assign(1, rows.GID(i));
       values.assign(1, 0.);
       for (int e = 0; e < n; ++e)
