@@ -371,6 +371,22 @@ namespace lithostress
       double
       residual_norm(const TrilinosWrappers::MPI::Vector &owned);
 
+      /** A warm start on a new operator in exact contact (the iterate is
+       * a coarser mesh's solution): the contact's nodes open where the
+       * iterate's faces are apart, and the ties of the others, which the
+       * first residual condenses. */
+      void
+      start_contact_from_iterate()
+      {
+        if (!contact || !nested_start)
+          return;
+        residual_norm(u);
+        contact->start_from(normal_jumps,
+                            1e-10 * u.linfty_norm(),
+                            constraints,
+                            linearised.constraints);
+      }
+
       /** Exact contact: @p r := C^T @p r for the ties of the closed nodes
        * (each tied row's residual added to the DoFs its tie takes it from,
        * with the tie's weights, and the tied row zeroed). */
@@ -526,8 +542,9 @@ namespace lithostress
       double f = 0, r_norm = 0, excess = 0;
       /** The last iteration. */
       unsigned int iteration = 0;
-      /** Whether u started from the last solve's solution. */
-      bool warm_start = false;
+      /** Whether u started from the last solve's solution; whether that
+       * was another mesh's (start_next_solve_from()), on this new operator. */
+      bool warm_start = false, nested_start = false;
       /** Whether the steps are preconditioned by a factorisation
        * (`Linear solver`); the residual a linear solve must reach beyond
        * the Linear solver tolerance (inexact Newton). */
@@ -653,10 +670,12 @@ namespace lithostress
                                                  system.locally_relevant);
         }
       // Newton starts from the last solution on this operator (the last
-      // time step's), else from zero.
+      // time step's) or from a coarser mesh's (start_next_solve_from()),
+      // else from zero.
       warm_start =
         settings.method == FrictionalSlidingSolver<dim>::Method::newton &&
         kept.solution.size() == u.size();
+      nested_start = warm_start && !kept.assembled;
       if (warm_start)
         u = kept.solution;
       else
@@ -1190,7 +1209,17 @@ namespace lithostress
       using PointValues = typename SlidingContext<dim>::PointValues;
       const auto                   &settings = c.settings;
       TrilinosWrappers::MPI::Vector x(c.u), step(c.u), trial(c.u);
+      c.start_contact_from_iterate();
       c.r_norm = c.residual_norm(c.u);
+      if (c.nested_start)
+        {
+          std::ostringstream line;
+          line << "  sliding: Newton starts from the last mesh's solution: "
+                  "residual "
+               << std::setprecision(3) << c.r_norm / c.f << ", "
+               << c.count_states();
+          c.progress(line.str());
+        }
       // Whether the last iteration changed exact contact's open nodes (the
       // next step satisfies other constraints than the iterate, and is
       // taken whole), and whether it changed them or a point's state.
@@ -1511,6 +1540,9 @@ namespace lithostress
         kept->operator_version = problem.operator_version;
         kept->dof_handler      = &problem.dof_handler;
       }
+    if (next_start.size() == problem.dof_handler.n_dofs())
+      kept->solution = next_start;
+    next_start.clear();
     SlidingContext<dim> c(
       parameters, problem, faults, history, report, progress, *kept);
     bool converged = false;

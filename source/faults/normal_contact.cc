@@ -214,6 +214,24 @@ namespace lithostress
 
   template <int dim>
   void
+  NormalContact<dim>::start_from(const std::vector<double>       &normal_jumps,
+                                 const double                     gap,
+                                 const AffineConstraints<double> &base,
+                                 AffineConstraints<double>       &constraints)
+  {
+    std::vector<types::global_dof_index> apart;
+    for (unsigned int i = 0; i < keys.size(); ++i)
+      if (in_contact[i] && normal_jumps[i] > gap)
+        apart.push_back(keys[i]);
+    open.clear();
+    for (const auto &part : Utilities::MPI::all_gather(communicator, apart))
+      open.insert(part.begin(), part.end());
+    ++version;
+    make_constraints(base, constraints);
+  }
+
+  template <int dim>
+  void
   NormalContact<dim>::accelerate(const bool restart)
   {
     const unsigned int  depth = 4;

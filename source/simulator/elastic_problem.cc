@@ -49,6 +49,13 @@ namespace lithostress
     phase_done("level DoFs");
     system.locally_owned = dofs.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dofs, system.locally_relevant);
+    if (solution_transfer)
+      {
+        TrilinosWrappers::MPI::Vector start(system.locally_owned, comm);
+        solution_transfer->interpolate(start);
+        solution_transfer.reset();
+        sliding_solver.start_next_solve_from(start);
+      }
     make_constraints(time);
     phase_done("constraints");
     system.reinit(dofs,
@@ -64,6 +71,22 @@ namespace lithostress
     stats.dofs       = dofs.n_dofs();
     stats.cells      = model.triangulation.n_global_active_cells();
     stats.setup_time = clock.wall_time();
+  }
+
+  template <int dim>
+  void
+  ElasticProblem<dim>::carry_solution_to_next_mesh()
+  {
+    using Method = typename FrictionalSlidingSolver<dim>::Method;
+    if (!model.faults.needs_sliding_solver() ||
+        sliding_solver.settings().method != Method::newton ||
+        present_solution.size() != dofs.n_dofs())
+      return;
+    solution_transfer =
+      std::make_unique<parallel::distributed::
+                         SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>(
+        dofs);
+    solution_transfer->prepare_for_coarsening_and_refinement(present_solution);
   }
 
   template <int dim>

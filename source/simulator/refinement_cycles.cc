@@ -238,6 +238,7 @@ namespace lithostress
             std::string(level_bytes > 0 ? " (or take Solver/Multigrid "
                                           "hierarchy = local smoothing)"
                                         : ""));
+        problem.carry_solution_to_next_mesh();
         if (before_change)
           before_change();
       },

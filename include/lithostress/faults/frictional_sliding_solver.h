@@ -166,8 +166,23 @@ namespace lithostress
           SolverReport                           &report,
           const std::function<void(std::string)> &progress);
 
+    /**
+     * The next solve's Newton iteration starts from @p iterate (this
+     * rank's owned entries on the next solve's mesh) instead of the
+     * elastic predictor: a coarser mesh's solution interpolated onto the
+     * refined one (nested iteration). Used by that solve only; the thesis
+     * iteration ignores it.
+     */
+    void
+    start_next_solve_from(const TrilinosWrappers::MPI::Vector &iterate)
+    {
+      next_start = iterate;
+    }
+
   private:
     Settings parameters;
+    /** The next solve's first iterate (empty: none). */
+    TrilinosWrappers::MPI::Vector next_start;
     /** The linearised operator, exact contact's ties and the
      * preconditioner, kept from one solve to the next of the same bulk
      * operator (DiscreteProblem::operator_version): the time loop's steps

@@ -150,6 +150,19 @@ namespace lithostress
            const std::vector<double>                    &normal_jumps);
 
     /**
+     * Before the first linearisation from a given iterate (a coarser
+     * mesh's solution: nested iteration), on a contact made for this mesh:
+     * the nodes where the iterate's faces are apart (w_n > @p gap at one of
+     * the node's points, @p normal_jumps) open, the others closed;
+     * @p constraints := @p base with the closed nodes' ties.
+     */
+    void
+    start_from(const std::vector<double>       &normal_jumps,
+               const double                     gap,
+               const AffineConstraints<double> &base,
+               AffineConstraints<double>       &constraints);
+
+    /**
      * The normal tractions for the next linearisation: the friction limit
      * of a sliding point depends on its reaction, which the linearised
      * system takes as given, so the Newton iteration is a fixed point

@@ -2,6 +2,7 @@
 #define lithostress_simulator_elastic_problem_h
 
 #include <deal.II/base/timer.h>
+#include <deal.II/distributed/solution_transfer.h>
 #include <deal.II/distributed/tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -94,6 +95,17 @@ namespace lithostress
     {
       slip_history.commit();
     }
+
+    /**
+     * Call once the mesh's refinement flags are set, before it changes:
+     * the solution is carried onto the next mesh, where setup()
+     * interpolates it and the frictional Newton iteration starts from it
+     * (nested iteration: the coarse mesh has found nearly the fine mesh's
+     * sliding and open points, where each Newton step is cheap). Nothing
+     * is kept without a frictional fault solved by Newton's method.
+     */
+    void
+    carry_solution_to_next_mesh();
 
     /** Start the faults' slip from zero (an elastic cycle solves the load
      * from the undeformed state on every mesh). */
@@ -206,6 +218,11 @@ namespace lithostress
     DoFHandler<dim>                    dofs;
     LinearSystem<dim>                  system;
     TrilinosWrappers::MPI::Vector      present_solution;
+    /** The solution on its way to the next mesh
+     * (carry_solution_to_next_mesh()). */
+    std::unique_ptr<parallel::distributed::
+                      SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>
+      solution_transfer;
     /** The frictional faults' accumulated slip (their history). */
     FaultSlipHistory slip_history;
     CycleStatistics  stats;
