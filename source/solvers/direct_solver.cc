@@ -97,19 +97,19 @@ namespace lithostress
   }
 
   template <int dim>
-  FactorisationOrAMGSolver<dim>::FactorisationOrAMGSolver(
+  FactorisationOrIterativeSolver<dim>::FactorisationOrIterativeSolver(
     std::unique_ptr<LinearSolver<dim>> direct,
-    std::unique_ptr<LinearSolver<dim>> amg,
+    std::unique_ptr<LinearSolver<dim>> iterative,
     const double                       direct_limit)
       : direct(std::move(direct))
-      , amg(std::move(amg))
+      , iterative(std::move(iterative))
       , direct_limit(direct_limit)
   {
   }
 
   template <int dim>
   bool
-  FactorisationOrAMGSolver<dim>::factorises(const double n_dofs) const
+  FactorisationOrIterativeSolver<dim>::factorises(const double n_dofs) const
   {
     // The program runs on MPI_COMM_WORLD.
     return Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 &&
@@ -118,22 +118,23 @@ namespace lithostress
 
   template <int dim>
   double
-  FactorisationOrAMGSolver<dim>::memory_per_dof(const double n_dofs) const
+  FactorisationOrIterativeSolver<dim>::memory_per_dof(const double n_dofs) const
   {
     return factorises(n_dofs) ? direct->memory_per_dof(n_dofs)
-                              : amg->memory_per_dof(n_dofs);
+                              : iterative->memory_per_dof(n_dofs);
   }
 
   template <int dim>
   SolverReport
-  FactorisationOrAMGSolver<dim>::solve(const DiscreteProblem<dim>    &problem,
-                                       TrilinosWrappers::MPI::Vector &solution)
+  FactorisationOrIterativeSolver<dim>::solve(
+    const DiscreteProblem<dim>    &problem,
+    TrilinosWrappers::MPI::Vector &solution)
   {
     return factorises(problem.dof_handler.n_dofs())
              ? direct->solve(problem, solution)
-             : amg->solve(problem, solution);
+             : iterative->solve(problem, solution);
   }
 
   template class DirectSolver<2>;
-  template class FactorisationOrAMGSolver<2>;
+  template class FactorisationOrIterativeSolver<2>;
 } // namespace lithostress

@@ -5,6 +5,7 @@
 #include <lithostress/solvers/direct_solver.h>
 #include <lithostress/solvers/linear_solver.h>
 #include <lithostress/solvers/multigrid_solver.h>
+#include <lithostress/solvers/two_field_multigrid_solver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -74,13 +75,17 @@ namespace lithostress
     prm.declare_entry(
       "Type",
       "automatic",
-      Patterns::Selection("automatic|matrix-free multigrid|AMG|direct"),
+      Patterns::Selection(
+        "automatic|matrix-free multigrid|two-field multigrid|AMG|direct"),
       "matrix-free multigrid: CG with a matrix-free geometric multigrid "
       "V-cycle (no matrix is assembled; one displacement field of degree "
-      "1-3); AMG: CG with algebraic multigrid on the assembled matrix (all "
+      "1-3); two-field multigrid: CG with a geometric multigrid V-cycle on "
+      "the assembled matrix, Galerkin coarse levels (faulted models: the "
+      "two displacement fields of locked, elastic or kinematic faults); "
+      "AMG: CG with algebraic multigrid on the assembled matrix (all "
       "rigid-body modes as near-null space); direct: a sparse direct "
-      "solver (Direct solver); automatic: the multigrid wherever it "
-      "applies, otherwise the direct solver on one rank up to Direct "
+      "solver (Direct solver); automatic: the matrix-free multigrid wherever "
+      "it applies, otherwise the direct solver on one rank up to Direct "
       "solver limit DoFs and AMG above it and on several ranks.");
     prm.declare_entry("Relative tolerance",
                       "1e-10",
@@ -224,6 +229,13 @@ namespace lithostress
           std::make_unique<MatrixFreeMultigridSolver<dim>>(s,
                                                            fe_space.degree());
       }
+    else if (type == "two-field multigrid")
+      {
+        typename TwoFieldMultigridSolver<dim>::Settings s;
+        s.relative_tolerance = prm.get_double("Relative tolerance");
+        s.max_iterations     = prm.get_integer("Maximum iterations");
+        solver = std::make_unique<TwoFieldMultigridSolver<dim>>(s);
+      }
     else if (type == "AMG")
       {
         typename AMGSolver<dim>::Settings s;
@@ -236,7 +248,7 @@ namespace lithostress
           prm.get_bool("Time matrix-vector product");
         solver = std::make_unique<AMGSolver<dim>>(s);
         if (automatic)
-          solver = std::make_unique<FactorisationOrAMGSolver<dim>>(
+          solver = std::make_unique<FactorisationOrIterativeSolver<dim>>(
             std::make_unique<DirectSolver<dim>>(prm.get("Direct solver")),
             std::move(solver),
             prm.get_double("Direct solver limit"));

@@ -62,22 +62,23 @@ namespace lithostress
   /**
    * `Solver/Type = automatic` where the matrix-free multigrid does not
    * apply (faults, loads with other stiffness): the direct solver's
-   * Cholesky factor on one rank up to `Direct solver limit` DoFs, CG with
-   * AMG above it and on several ranks. Decided at each solve, since
-   * adaptive cycles change the DoFs.
+   * Cholesky factor on one rank up to `Direct solver limit` DoFs, the
+   * iterative solver (the two fields' multigrid or AMG) above it and on
+   * several ranks. Decided at each solve, since adaptive cycles change the
+   * DoFs.
    */
   template <int dim>
-  class FactorisationOrAMGSolver : public LinearSolver<dim>
+  class FactorisationOrIterativeSolver : public LinearSolver<dim>
   {
   public:
-    FactorisationOrAMGSolver(std::unique_ptr<LinearSolver<dim>> direct,
-                             std::unique_ptr<LinearSolver<dim>> amg,
-                             const double                       direct_limit);
+    FactorisationOrIterativeSolver(std::unique_ptr<LinearSolver<dim>> direct,
+                                   std::unique_ptr<LinearSolver<dim>> iterative,
+                                   const double direct_limit);
 
     std::string
     name() const override
     {
-      return "direct solver or CG with AMG";
+      return "direct solver or " + iterative->name();
     }
 
     double
@@ -88,7 +89,7 @@ namespace lithostress
           TrilinosWrappers::MPI::Vector &solution) override;
 
   private:
-    std::unique_ptr<LinearSolver<dim>> direct, amg;
+    std::unique_ptr<LinearSolver<dim>> direct, iterative;
     double                             direct_limit;
 
     /** Whether a model of @p n_dofs DoFs is factorised. */

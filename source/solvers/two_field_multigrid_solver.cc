@@ -1,0 +1,90 @@
+#include <deal.II/base/timer.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <lithostress/base/input_error.h>
+#include <lithostress/solvers/two_field_multigrid_solver.h>
+
+namespace lithostress
+{
+  template <int dim>
+  TwoFieldMultigridSolver<dim>::TwoFieldMultigridSolver(
+    const Settings &settings)
+      : settings(settings)
+  {
+  }
+
+  template <int dim>
+  SolverReport
+  TwoFieldMultigridSolver<dim>::solve(const DiscreteProblem<dim>    &problem,
+                                      TrilinosWrappers::MPI::Vector &solution)
+  {
+    const DoFHandler<dim>   &dof_handler = problem.dof_handler;
+    const LinearSystem<dim> &system      = problem.system;
+    const MPI_Comm           comm        = dof_handler.get_communicator();
+    SolverReport             report;
+    report.solver = "two-field multigrid";
+    Timer timer(comm, true);
+    // The operator version's upper half counts the meshes
+    // (ElasticProblem::operator_version).
+    const unsigned long long mesh = problem.operator_version >> 32;
+    if (!multigrid || mesh != mesh_version)
+      {
+        multigrid = std::make_unique<TwoFieldMultigrid<dim>>();
+        multigrid->make_hierarchy(dof_handler,
+                                  problem.fe_space.fe_collection());
+        mesh_version     = mesh;
+        operator_version = ~0ULL;
+      }
+    if (operator_version != problem.operator_version)
+      {
+        multigrid->initialize(system.matrix,
+                              system.constraints,
+                              typename TwoFieldMultigrid<dim>::Settings());
+        operator_version = problem.operator_version;
+      }
+    report.setup_time = timer.wall_time();
+
+    timer.restart();
+    solution.reinit(system.locally_owned, comm);
+    const double rhs_norm = system.rhs.l2_norm();
+    check_right_hand_side(rhs_norm);
+    SolverControl                           control(settings.max_iterations,
+                          settings.relative_tolerance * rhs_norm,
+                          false,
+                          false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    stop_on_signal(cg, comm);
+    if (rhs_norm == 0)
+      solution = 0;
+    else
+      {
+        try
+          {
+            cg.solve(system.matrix, solution, system.rhs, *multigrid);
+          }
+        catch (const SolverControl::NoConvergence &exc)
+          {
+            rethrow_solver_failure(exc,
+                                   comm,
+                                   name(),
+                                   rhs_norm,
+                                   "raise Solver/Maximum iterations or use "
+                                   "Solver/Type = direct");
+          }
+      }
+    report.iterations     = iterations_of(control);
+    report.final_residual = rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
+    report.solve_time     = timer.wall_time();
+    report.memory_bytes   = multigrid->memory_consumption();
+    // Elastic cycles release the levels before the next mesh.
+    if (!problem.keep_setup)
+      {
+        multigrid.reset();
+        mesh_version = operator_version = ~0ULL;
+      }
+    return report;
+  }
+
+  template class TwoFieldMultigridSolver<2>;
+} // namespace lithostress
