@@ -1,10 +1,9 @@
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <lithostress/base/input_error.h>
 #include <lithostress/solvers/amg_solver.h>
+#include <lithostress/solvers/preconditioned_cg.h>
 #include <lithostress/solvers/rigid_body_modes.h>
 
 #include <Teuchos_ParameterList.hpp>
@@ -48,36 +47,15 @@ namespace lithostress
     report.setup_time                                       = timer.wall_time();
 
     timer.restart();
-    solution.reinit(system.locally_owned, dof_handler.get_communicator());
-    const double rhs_norm = system.rhs.l2_norm();
-    check_right_hand_side(rhs_norm);
-    SolverControl                           control(settings.max_iterations,
-                          settings.relative_tolerance * rhs_norm,
-                          false,
-                          false);
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    stop_on_signal(cg, dof_handler.get_communicator());
-    if (rhs_norm == 0)
-      solution = 0;
-    else
-      {
-        try
-          {
-            cg.solve(system.matrix, solution, system.rhs, preconditioner);
-          }
-        catch (const SolverControl::NoConvergence &exc)
-          {
-            rethrow_solver_failure(exc,
-                                   dof_handler.get_communicator(),
-                                   "CG with AMG",
-                                   rhs_norm,
-                                   "raise Solver/Maximum iterations or use "
-                                   "Solver/Type = direct");
-          }
-      }
-    report.iterations     = iterations_of(control);
-    report.final_residual = rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
-    report.solve_time     = timer.wall_time();
+    solve_by_preconditioned_cg(system,
+                               preconditioner,
+                               settings.relative_tolerance,
+                               settings.max_iterations,
+                               name(),
+                               dof_handler.get_communicator(),
+                               solution,
+                               report);
+    report.solve_time = timer.wall_time();
     if (problem.keep_setup)
       {
         kept_amg     = std::move(amg);

@@ -1,8 +1,7 @@
 #include <deal.II/base/timer.h>
-#include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/solver_control.h>
 
 #include <lithostress/base/input_error.h>
+#include <lithostress/solvers/preconditioned_cg.h>
 #include <lithostress/solvers/two_field_multigrid_solver.h>
 
 namespace lithostress
@@ -46,37 +45,16 @@ namespace lithostress
     report.setup_time = timer.wall_time();
 
     timer.restart();
-    solution.reinit(system.locally_owned, comm);
-    const double rhs_norm = system.rhs.l2_norm();
-    check_right_hand_side(rhs_norm);
-    SolverControl                           control(settings.max_iterations,
-                          settings.relative_tolerance * rhs_norm,
-                          false,
-                          false);
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    stop_on_signal(cg, comm);
-    if (rhs_norm == 0)
-      solution = 0;
-    else
-      {
-        try
-          {
-            cg.solve(system.matrix, solution, system.rhs, *multigrid);
-          }
-        catch (const SolverControl::NoConvergence &exc)
-          {
-            rethrow_solver_failure(exc,
-                                   comm,
-                                   name(),
-                                   rhs_norm,
-                                   "raise Solver/Maximum iterations or use "
-                                   "Solver/Type = direct");
-          }
-      }
-    report.iterations     = iterations_of(control);
-    report.final_residual = rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
-    report.solve_time     = timer.wall_time();
-    report.memory_bytes   = multigrid->memory_consumption();
+    solve_by_preconditioned_cg(system,
+                               *multigrid,
+                               settings.relative_tolerance,
+                               settings.max_iterations,
+                               name(),
+                               comm,
+                               solution,
+                               report);
+    report.solve_time   = timer.wall_time();
+    report.memory_bytes = multigrid->memory_consumption();
     // Elastic cycles release the levels before the next mesh.
     if (!problem.keep_setup)
       {

@@ -1,0 +1,65 @@
+#ifndef lithostress_solvers_preconditioned_cg_h
+#define lithostress_solvers_preconditioned_cg_h
+
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <lithostress/solvers/linear_solver.h>
+
+#include <string>
+
+namespace lithostress
+{
+  /**
+   * CG on @p system's matrix from a zero guess, preconditioned by
+   * @p preconditioner, until ‖r‖ ≤ @p relative_tolerance ‖f‖
+   * (unpreconditioned residual), at most @p max_iterations; @p solution
+   * is sized to the owned DoFs. The iterations and the final relative
+   * residual go to @p report. A solve that does not converge throws
+   * ComputationError naming @p name and the entries to change; an
+   * interrupted one RunInterrupted (stop_on_signal()).
+   */
+  template <int dim, typename Preconditioner>
+  void
+  solve_by_preconditioned_cg(const LinearSystem<dim>       &system,
+                             const Preconditioner          &preconditioner,
+                             const double                   relative_tolerance,
+                             const unsigned int             max_iterations,
+                             const std::string             &name,
+                             const MPI_Comm                 communicator,
+                             TrilinosWrappers::MPI::Vector &solution,
+                             SolverReport                  &report)
+  {
+    solution.reinit(system.locally_owned, communicator);
+    const double rhs_norm = system.rhs.l2_norm();
+    check_right_hand_side(rhs_norm);
+    SolverControl                           control(max_iterations,
+                          relative_tolerance * rhs_norm,
+                          false,
+                          false);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    stop_on_signal(cg, communicator);
+    if (rhs_norm == 0)
+      solution = 0;
+    else
+      {
+        try
+          {
+            cg.solve(system.matrix, solution, system.rhs, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &exc)
+          {
+            rethrow_solver_failure(exc,
+                                   communicator,
+                                   name,
+                                   rhs_norm,
+                                   "raise Solver/Maximum iterations or use "
+                                   "Solver/Type = direct");
+          }
+      }
+    report.iterations     = iterations_of(control);
+    report.final_residual = rhs_norm > 0 ? control.last_value() / rhs_norm : 0;
+  }
+} // namespace lithostress
+
+#endif
