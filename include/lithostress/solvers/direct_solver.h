@@ -63,8 +63,8 @@ namespace lithostress
    * `Solver/Type = automatic` where the matrix-free multigrid does not
    * apply (faults, loads with other stiffness): the direct solver's
    * Cholesky factor on one rank up to `Direct solver limit` DoFs, the
-   * iterative solver (the two fields' multigrid or AMG) above it and on
-   * several ranks. Decided at each solve, since adaptive cycles change the
+   * iterative solver it is given (CG with AMG) above it and on several
+   * ranks. Decided at each solve, since adaptive cycles change the
    * DoFs.
    */
   template <int dim>

@@ -13,9 +13,10 @@ namespace lithostress
    * Conjugate gradients preconditioned by the geometric multigrid on the
    * assembled matrix of a faulted model (TwoFieldMultigrid: the two
    * displacement fields of doc/faults.md, Galerkin coarse operators): the
-   * elastic solves of models whose faults are locked, elastic or slip by a
+   * elastic solves of models whose faults are locked or slip by a
    * prescribed amount, where the matrix-free multigrid (one field) does
-   * not apply. Its levels are kept while the mesh is; a new operator on
+   * not apply (an elastic fault's stiff normal spring defeats its point
+   * smoother). Its levels are kept while the mesh is; a new operator on
    * the same mesh (the time loop's next step size) makes only the
    * Galerkin products again. Stops when ‖r‖ ≤ tol ‖f‖.
    */
