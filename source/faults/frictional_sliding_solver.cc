@@ -142,6 +142,17 @@ namespace lithostress
                       "with the normal spring. The goal-oriented dual "
                       "problems take the same in exact contact (KLU with "
                       "the normal spring).");
+    prm.declare_entry("Multigrid smoother degree",
+                      "4",
+                      Patterns::Integer(1, 20),
+                      "Linear solver = multigrid (or automatic choosing "
+                      "it): the degree of the Chebyshev smoother on each "
+                      "level of the two fields' V-cycle (products with the "
+                      "level matrix per smoothing step). From 27 k to "
+                      "1.65 M DoFs on the thesis's normal fault, thrust and "
+                      "graben the iterations per Newton step grow by up to "
+                      "33 % with 4 and by 19-27 % with 6, which is 6-24 % "
+                      "slower (doc/performance.md).");
     prm.declare_entry("Direct solver limit",
                       "2e6",
                       Patterns::Double(0),
@@ -181,6 +192,7 @@ namespace lithostress
                                        ? Preconditioner::multigrid
                                        : Preconditioner::automatic;
     parameters.direct_limit        = prm.get_double("Direct solver limit");
+    parameters.smoother_degree = prm.get_integer("Multigrid smoother degree");
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
                         "must be positive");
@@ -960,9 +972,9 @@ namespace lithostress
               multigrid = std::make_unique<TwoFieldMultigrid<dim>>();
               multigrid->make_hierarchy(dof_handler, fe_space.fe_collection());
             }
-          multigrid->initialize(matrix,
-                                active_constraints(),
-                                typename TwoFieldMultigrid<dim>::Settings());
+          typename TwoFieldMultigrid<dim>::Settings smoothing;
+          smoothing.smoother_degree = settings.smoother_degree;
+          multigrid->initialize(matrix, active_constraints(), smoothing);
         }
       else if (direct)
         {

@@ -110,6 +110,9 @@ namespace lithostress
        * multigrid in exact contact, the AMG with the normal spring. */
       Preconditioner preconditioner = Preconditioner::automatic;
       double         direct_limit   = 2e6;
+      /** Degree of the two fields' multigrid's Chebyshev smoother
+       * (`Multigrid smoother degree`). */
+      unsigned int smoother_degree = 4;
     };
 
     FrictionalSlidingSolver();
