@@ -111,13 +111,18 @@ namespace lithostress
     prm.declare_entry("Multigrid smoother degree",
                       "5",
                       Patterns::Integer(1, 20),
-                      "Degree of the Chebyshev smoother on each multigrid "
-                      "level (operator products per smoothing step).");
+                      "Degree of the Chebyshev smoother on each level of "
+                      "the matrix-free multigrid (operator products per "
+                      "smoothing step). Type = two-field multigrid smooths "
+                      "with degree 4 and range 20; the sliding solver's "
+                      "multigrid with Faults/Sliding solver/Multigrid "
+                      "smoother degree.");
     prm.declare_entry("Multigrid smoothing range",
                       "20",
                       Patterns::Double(1.5),
                       "Ratio of the largest eigenvalue to the smallest one "
-                      "the Chebyshev smoother damps.");
+                      "the matrix-free multigrid's Chebyshev smoother "
+                      "damps.");
     prm.declare_entry("Multigrid level precision",
                       "single",
                       Patterns::Selection("single|double"),
