@@ -136,7 +136,9 @@ namespace lithostress
                       "(the later steps' tangents differ only at the "
                       "fault) and across the time steps of one step size; "
                       "multigrid = a geometric multigrid V-cycle on the two "
-                      "fields with Galerkin coarse operators (exact contact); "
+                      "fields with Galerkin coarse operators (exact contact), "
+                      "kept in the same way (made again when the open set "
+                      "changes, or when kept levels stall); "
                       "automatic = direct on one rank up to Direct solver "
                       "limit DoFs, else multigrid in exact contact and AMG "
                       "with the normal spring. The goal-oriented dual "
@@ -613,6 +615,11 @@ namespace lithostress
       void
       set_up_preconditioner();
 
+      /** linear_solve() with the multigrid: its levels made again and the
+       * solve repeated if kept levels (from an earlier tangent) stall. */
+      void
+      multigrid_solve(TrilinosWrappers::MPI::Vector &x, const double target);
+
       /** Solve the linearised system for @p x to the residual @p target
        * by @p Krylov (SolverCG or SolverGMRES) with the preconditioner
        * @p preconditioner, counting its iterations; false if it did not
@@ -923,7 +930,6 @@ namespace lithostress
       // right-hand side the whole affine part (and the whole tangent's
       // share of the constraints' inhomogeneities).
       typename FaultInterface<dim>::FaceTerms terms(fe_space), change(fe_space);
-      bool                                    tangent_changed = false;
       faults.for_each_interface_point(
         dof_handler, fe_space, &u_ghost, [&](const PointValues &values) {
           Tensor<1, dim> t;
@@ -931,8 +937,6 @@ namespace lithostress
           law(values, t, D);
           terms.add_tangent(values, D);
           terms.add_affine(values, t - D * values.jump);
-          tangent_changed =
-            tangent_changed || D != assembled_tangents[values.index];
           change.add_tangent(values, D - assembled_tangents[values.index]);
           assembled_tangents[values.index] = D;
           if (!values.last_of_pair)
@@ -950,12 +954,11 @@ namespace lithostress
       matrix.compress(VectorOperation::add);
       rhs.compress(VectorOperation::add);
       time_assembly += timer.wall_time();
-      // The multigrid's coarse levels are Galerkin products of the
-      // tangent: they follow every change of the points' states, as a
-      // kept factorisation's extra iterations would not.
-      if (use_multigrid &&
-          Utilities::MPI::logical_or(tangent_changed, communicator))
-        preconditioner_current = false;
+      // A kept preconditioner (the factorisation, or the multigrid's
+      // Galerkin levels and smoothers) was made from an earlier tangent,
+      // which differs from this one only at the fault: it is made again
+      // once its extra iterations cost more than making it
+      // (linear_solve()).
       if (!preconditioner_current)
         set_up_preconditioner();
     }
@@ -1135,6 +1138,36 @@ namespace lithostress
 
     template <int dim>
     void
+    SlidingContext<dim>::multigrid_solve(TrilinosWrappers::MPI::Vector &x,
+                                         const double                   target)
+    {
+      using CG    = SolverCG<TrilinosWrappers::MPI::Vector>;
+      using GMRES = SolverGMRES<TrilinosWrappers::MPI::Vector>;
+      // Levels kept from an earlier tangent (first_iterations known) get
+      // a few times their first solve's iterations; a stiffened fault point
+      // can leave their smoothers' eigenvalue bounds behind.
+      const bool kept_levels =
+        first_iterations != numbers::invalid_unsigned_int;
+      const unsigned int limit =
+        kept_levels ? std::max(50U, 4 * first_iterations) : 5000;
+      const TrilinosWrappers::MPI::Vector start(x);
+      const bool                          converged =
+        symmetric()
+                                   ? krylov_solve<CG>(x, target, *multigrid, limit, kept_levels)
+                                   : krylov_solve<GMRES>(x, target, *multigrid, limit, kept_levels);
+      if (converged)
+        return;
+      progress("  sliding: the kept multigrid levels stalled; made again");
+      x = start;
+      set_up_preconditioner();
+      if (symmetric())
+        krylov_solve<CG>(x, target, *multigrid, 5000, false);
+      else
+        krylov_solve<GMRES>(x, target, *multigrid, 5000, false);
+    }
+
+    template <int dim>
+    void
     SlidingContext<dim>::linear_solve(TrilinosWrappers::MPI::Vector &x)
     {
       Timer        timer;
@@ -1143,10 +1176,8 @@ namespace lithostress
       to_tolerance = forcing <= settings.linear_tolerance * rhs.l2_norm();
       using CG     = SolverCG<TrilinosWrappers::MPI::Vector>;
       using GMRES  = SolverGMRES<TrilinosWrappers::MPI::Vector>;
-      if (use_multigrid && symmetric())
-        krylov_solve<CG>(x, target, *multigrid, 5000, false);
-      else if (use_multigrid)
-        krylov_solve<GMRES>(x, target, *multigrid, 5000, false);
+      if (use_multigrid)
+        multigrid_solve(x, target);
       else if (cholesky && symmetric())
         krylov_solve<CG>(x, target, *cholesky, 5000, false);
       else if (cholesky)
