@@ -462,13 +462,12 @@ namespace lithostress
           continue;
         // A DoF no coarse function reaches (a hanging node of a coarser
         // level) has a zero row: the smoother leaves it at zero.
-        Vector inverse_diagonal(residuals[level]);
-        for (const auto i : inverse_diagonal.locally_owned_elements())
-          {
-            const double d      = a.el(i, i);
-            inverse_diagonal[i] = d != 0 ? 1. / d : 0.;
-          }
-        inverse_diagonal.compress(VectorOperation::insert);
+        Vector    inverse_diagonal(residuals[level]);
+        const int error = a.trilinos_matrix().ExtractDiagonalCopy(
+          *inverse_diagonal.trilinos_vector()(0));
+        AssertThrow(error == 0, ExcTrilinosError(error));
+        for (auto &d : inverse_diagonal)
+          d = d != 0 ? 1. / d : 0.;
         typename Smoother::AdditionalData data;
         data.degree                  = settings.smoother_degree;
         data.smoothing_range         = settings.smoothing_range;
@@ -480,14 +479,26 @@ namespace lithostress
       }
 
     // The coarsest operator, gathered on every rank and factorised there.
-    const Matrix            &coarsest = level_matrix(0);
+    // (Read through Epetra's row views: deal.II's row iterators copy each
+    // row into a cache, which cost more than the factorisation.)
+    const Epetra_CrsMatrix  &coarsest = level_matrix(0).trilinos_matrix();
     std::vector<MatrixEntry> entries;
-    for (const auto i : coarsest.locally_owned_range_indices())
-      for (auto entry = coarsest.begin(i); entry != coarsest.end(i); ++entry)
-        entries.push_back({i, entry->column(), entry->value()});
+    for (int row = 0; row < coarsest.NumMyRows(); ++row)
+      {
+        int     length  = 0;
+        double *values  = nullptr;
+        int    *columns = nullptr;
+        coarsest.ExtractMyRowView(row, length, values, columns);
+        const types::global_dof_index i = coarsest.GRID64(row);
+        for (int e = 0; e < length; ++e)
+          entries.push_back(
+            {i,
+             static_cast<types::global_dof_index>(coarsest.GCID64(columns[e])),
+             values[e]});
+      }
     const std::vector<MatrixEntry> all_entries =
-      gather_on_all(coarsest.get_mpi_communicator(), entries);
-    const types::global_dof_index n0 = coarsest.m();
+      gather_on_all(level_matrix(0).get_mpi_communicator(), entries);
+    const types::global_dof_index n0 = level_matrix(0).m();
     DynamicSparsityPattern        pattern(n0, n0);
     for (types::global_dof_index i = 0; i < n0; ++i)
       pattern.add(i, i);
