@@ -1150,20 +1150,19 @@ namespace lithostress
         first_iterations != numbers::invalid_unsigned_int;
       const unsigned int limit =
         kept_levels ? std::max(50U, 4 * first_iterations) : 5000;
+      const auto solve = [&](const unsigned int iterations,
+                             const bool         may_fail) {
+        if (symmetric())
+          return krylov_solve<CG>(x, target, *multigrid, iterations, may_fail);
+        return krylov_solve<GMRES>(x, target, *multigrid, iterations, may_fail);
+      };
       const TrilinosWrappers::MPI::Vector start(x);
-      const bool                          converged =
-        symmetric()
-                                   ? krylov_solve<CG>(x, target, *multigrid, limit, kept_levels)
-                                   : krylov_solve<GMRES>(x, target, *multigrid, limit, kept_levels);
-      if (converged)
+      if (solve(limit, kept_levels))
         return;
       progress("  sliding: the kept multigrid levels stalled; made again");
       x = start;
       set_up_preconditioner();
-      if (symmetric())
-        krylov_solve<CG>(x, target, *multigrid, 5000, false);
-      else
-        krylov_solve<GMRES>(x, target, *multigrid, 5000, false);
+      solve(5000, false);
     }
 
     template <int dim>
