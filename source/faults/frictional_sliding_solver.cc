@@ -24,6 +24,79 @@
 
 namespace lithostress
 {
+  namespace
+  {
+    /** The entries of `Faults/Sliding solver` that choose and tune the
+     * linear solver of the sliding steps (the caller is in that
+     * subsection). */
+    void
+    declare_linear_solver_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Linear solver",
+        "automatic",
+        Patterns::Selection("automatic|AMG|direct|multigrid"),
+        "The preconditioner of each sliding step's Krylov "
+        "solve (CG in exact contact, GMRES with the normal "
+        "spring): AMG = the elasticity AMG with the rigid "
+        "modes of each block (Chebyshev smoothing in exact "
+        "contact; ILU with the stiff spring); direct = a "
+        "sparse factorisation of the tangent (its Cholesky "
+        "factor in exact contact on one rank, else Amesos "
+        "KLU), kept until the iterations it costs beyond its "
+        "first solve's have taken longer than making it "
+        "(the later steps' tangents differ only at the "
+        "fault) and across the time steps of one step size; "
+        "multigrid = a geometric multigrid V-cycle on the two "
+        "fields with Galerkin coarse operators (exact contact), "
+        "kept in the same way (made again when the open set "
+        "changes, or when kept levels stall); "
+        "automatic = in exact contact, direct on one rank up "
+        "to Multigrid limit DoFs, above it multigrid, handing "
+        "over to direct up to Direct solver limit where the "
+        "multigrid is slow (Multigrid limit), and multigrid "
+        "on several ranks; with the normal spring direct on "
+        "one rank up to Direct solver limit, else AMG. The "
+        "goal-oriented dual "
+        "problems take the same in exact contact (KLU with "
+        "the normal spring).");
+      prm.declare_entry("Multigrid smoother degree",
+                        "4",
+                        Patterns::Integer(1, 20),
+                        "Linear solver = multigrid (or automatic choosing "
+                        "it): the degree of the Chebyshev smoother on each "
+                        "level of the two fields' V-cycle (products with the "
+                        "level matrix per smoothing step), preconditioned by "
+                        "the inverse of each node's block. From 27 k to "
+                        "1.65 M DoFs on the thesis's normal fault, graben and "
+                        "thrust the iterations per Newton step change by "
+                        "+16, +12 and -16 % with 4; 6 takes about a fifth "
+                        "fewer iterations, each dearer (doc/performance.md).");
+      prm.declare_entry("Direct solver limit",
+                        "2e6",
+                        Patterns::Double(0),
+                        "Linear solver = automatic: the largest number of "
+                        "DoFs for which one rank factorises the tangent "
+                        "(at 1.65e6 DoFs the run's peak memory was 2.6-3.7 KB "
+                        "per DoF; doc/performance.md).");
+      prm.declare_entry("Multigrid limit",
+                        "2e5",
+                        Patterns::Double(0),
+                        "Linear solver = automatic on one rank, exact "
+                        "contact: above this many DoFs (up to Direct solver "
+                        "limit) the sliding steps start with the two fields' "
+                        "multigrid, and hand over to the kept factorisation "
+                        "if the multigrid's second solve takes more than 8 "
+                        "iterations (a Newton step with the factor costs "
+                        "about 8 V-cycles on the thesis's layers); below it "
+                        "the factorisation. Measured at 416 k and 1.65 M "
+                        "DoFs: the multigrid 13-27 % faster than the factor "
+                        "on the normal fault and the graben (5 iterations per "
+                        "solve), the factor 1.5-2 times faster on the "
+                        "low-angle thrust (10-11; doc/performance.md).");
+    }
+  } // namespace
+
   template <int dim>
   void
   FrictionalSlidingSolver<dim>::declare_parameters(ParameterHandler &prm)
@@ -121,48 +194,7 @@ namespace lithostress
                       "point with Anderson acceleration (symmetric tangent, "
                       "CG), which contracts by about 0.2 per iteration on "
                       "the thrust fault.");
-    prm.declare_entry("Linear solver",
-                      "automatic",
-                      Patterns::Selection("automatic|AMG|direct|multigrid"),
-                      "The preconditioner of each sliding step's Krylov "
-                      "solve (CG in exact contact, GMRES with the normal "
-                      "spring): AMG = the elasticity AMG with the rigid "
-                      "modes of each block (Chebyshev smoothing in exact "
-                      "contact; ILU with the stiff spring); direct = a "
-                      "sparse factorisation of the tangent (its Cholesky "
-                      "factor in exact contact on one rank, else Amesos "
-                      "KLU), kept until the iterations it costs beyond its "
-                      "first solve's have taken longer than making it "
-                      "(the later steps' tangents differ only at the "
-                      "fault) and across the time steps of one step size; "
-                      "multigrid = a geometric multigrid V-cycle on the two "
-                      "fields with Galerkin coarse operators (exact contact), "
-                      "kept in the same way (made again when the open set "
-                      "changes, or when kept levels stall); "
-                      "automatic = direct on one rank up to Direct solver "
-                      "limit DoFs, else multigrid in exact contact and AMG "
-                      "with the normal spring. The goal-oriented dual "
-                      "problems take the same in exact contact (KLU with "
-                      "the normal spring).");
-    prm.declare_entry("Multigrid smoother degree",
-                      "4",
-                      Patterns::Integer(1, 20),
-                      "Linear solver = multigrid (or automatic choosing "
-                      "it): the degree of the Chebyshev smoother on each "
-                      "level of the two fields' V-cycle (products with the "
-                      "level matrix per smoothing step). From 27 k to "
-                      "1.65 M DoFs on the thesis's normal fault, thrust and "
-                      "graben the iterations per Newton step grow by up to "
-                      "33 % with 4 and by 19-27 % with 6, which is 6-24 % "
-                      "slower (doc/performance.md).");
-    prm.declare_entry("Direct solver limit",
-                      "2e6",
-                      Patterns::Double(0),
-                      "Linear solver = automatic: the largest number of "
-                      "DoFs for which one rank factorises the tangent "
-                      "(measured faster than the AMG on the thesis's fault "
-                      "models up to 1.65e6 DoFs, where the run's peak "
-                      "memory was 2.6-3.1 KB per DoF; doc/performance.md).");
+    declare_linear_solver_parameters(prm);
     prm.leave_subsection();
     prm.leave_subsection();
   }
@@ -194,6 +226,7 @@ namespace lithostress
                                        ? Preconditioner::multigrid
                                        : Preconditioner::automatic;
     parameters.direct_limit        = prm.get_double("Direct solver limit");
+    parameters.multigrid_limit     = prm.get_double("Multigrid limit");
     parameters.smoother_degree = prm.get_integer("Multigrid smoother degree");
     if (!(parameters.convergence_factor > 0))
       throw_input_error("Faults/Sliding solver/Convergence factor",
@@ -283,6 +316,11 @@ namespace lithostress
     std::unique_ptr<TrilinosWrappers::SolverDirect> factorization;
     std::unique_ptr<SparseCholesky>                 cholesky;
     std::unique_ptr<TwoFieldMultigrid<dim>>         multigrid;
+    /** `automatic`'s multigrid on this operator: its solves so far, and
+     * whether it was handed over to the factorisation
+     * (FrictionalSlidingSolver::hands_over_to_direct()). */
+    unsigned int multigrid_solves   = 0;
+    bool         multigrid_declined = false;
     /** The last converged Newton solution, where the next solve starts
      * (empty: none yet). */
     TrilinosWrappers::MPI::Vector solution;
@@ -559,6 +597,10 @@ namespace lithostress
       /** Whether u started from the last solve's solution; whether that
        * was another mesh's (start_next_solve_from()), on this new operator. */
       bool warm_start = false, nested_start = false;
+      /** Whether Newton with the reaction in the tangent diverged
+       * (solve_by_newton()): the caller solves again with the reactions
+       * taken as given. */
+      bool diverged = false;
       /** Whether the steps are preconditioned by a factorisation
        * (`Linear solver`); the residual a linear solve must reach beyond
        * the Linear solver tolerance (inexact Newton). */
@@ -567,8 +609,9 @@ namespace lithostress
       /** Whether the last linear solve went to the Linear solver
        * tolerance (the forcing was below it). */
       bool to_tolerance = false;
-      /** Whether they are preconditioned by TwoFieldMultigrid. */
-      bool use_multigrid = false;
+      /** Whether they are preconditioned by TwoFieldMultigrid, and
+       * whether it may hand over to the factorisation (`automatic`). */
+      bool use_multigrid = false, may_hand_over = false;
       /** The tangent's coupling of the friction limits to the reactions
        * (exact contact, Reaction in tangent). */
       FrictionLimitCoupling<dim> coupling;
@@ -578,6 +621,16 @@ namespace lithostress
        * and residual evaluations (with the contact's reactions). */
       double time_assembly = 0, time_preconditioner = 0, time_solve = 0,
              time_residual = 0;
+
+      /** The phase times above by index, in that order. */
+      double
+      phase_time(const unsigned int k) const
+      {
+        return k == 0   ? time_assembly
+               : k == 1 ? time_preconditioner
+               : k == 2 ? time_solve
+                        : time_residual;
+      }
 
     private:
       /** The interface's forces ∫[v]·t at u_ghost into force (with the
@@ -614,6 +667,12 @@ namespace lithostress
        * or the AMG, built afresh if it is not current. */
       void
       set_up_preconditioner();
+
+      /** `automatic` (may_hand_over): the factorisation from the next
+       * solve on if the multigrid's second solve on this operator took
+       * more than FrictionalSlidingSolver::slow_multigrid_iterations. */
+      void
+      hand_over_if_slow();
 
       /** linear_solve() with the multigrid: its levels made again and the
        * solve repeated if kept levels (from an earlier tangent) stall. */
@@ -723,6 +782,16 @@ namespace lithostress
                                         communicator));
       direct        = chosen == Preconditioner::direct;
       use_multigrid = chosen == Preconditioner::multigrid;
+      if (use_multigrid && Solver::hands_over_to_direct(
+                             settings,
+                             faults.contact(),
+                             dof_handler.n_dofs(),
+                             Utilities::MPI::n_mpi_processes(communicator)))
+        {
+          may_hand_over = !kept.multigrid_declined;
+          use_multigrid = may_hand_over;
+          direct        = !may_hand_over;
+        }
       assembled_tangents.resize(n_points);
     }
 
@@ -1220,6 +1289,31 @@ namespace lithostress
                                     stale_cost > preconditioner_cost) ||
           (!contact && !direct))
         preconditioner_current = false;
+      if (may_hand_over)
+        hand_over_if_slow();
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::hand_over_if_slow()
+    {
+      // Judged at the second solve: the first is often the elastic
+      // predictor, every point stuck, which any fault's multigrid solves
+      // as fast as a locked fault's.
+      if (++kept.multigrid_solves < 2)
+        return;
+      may_hand_over = false;
+      using Solver  = FrictionalSlidingSolver<dim>;
+      if (last_iterations <= Solver::slow_multigrid_iterations)
+        return;
+      progress("  sliding: the multigrid took " +
+               std::to_string(last_iterations) +
+               " iterations; the kept factorisation from here on");
+      kept.multigrid_declined = true;
+      use_multigrid           = false;
+      direct                  = true;
+      multigrid.reset();
+      preconditioner_current = false;
     }
 
     template <int dim>
@@ -1265,7 +1359,8 @@ namespace lithostress
       // Whether the last iteration changed exact contact's open nodes (the
       // next step satisfies other constraints than the iterate, and is
       // taken whole), and whether it changed them or a point's state.
-      bool set_changed = false, changed = true;
+      bool         set_changed = false, changed = true;
+      const double start_norm = c.r_norm;
       for (c.iteration = 1; c.iteration <= settings.max_iterations;
            ++c.iteration)
         {
@@ -1324,6 +1419,19 @@ namespace lithostress
           if (c.r_norm <= settings.residual_tolerance * c.f &&
               c.excess <= settings.excess_shear_tolerance && !set_changed)
             return true;
+          // The friction limits' coupling to the reactions can send the
+          // active set astray, each whole step opening more of the fault
+          // (the listric normal fault at 1.32 M DoFs: 23 open points at
+          // 1.3e-4 of the load, then 41, 52, 62 ... at 3, 5, 28 times the
+          // load, with the factor and the multigrid alike), where the fixed
+          // point in the reactions converges. An iterate twice as far from
+          // equilibrium as the start, past the first few steps, ends it.
+          if (c.coupling.active() && c.iteration > 4 &&
+              c.r_norm > 2 * start_norm)
+            {
+              c.diverged = true;
+              return false;
+            }
           // The states stood still and the step was solved to the Linear
           // solver tolerance, yet the step did not halve the residual: it
           // is at the round-off of the linear solves (1.65 M DoFs on 2
@@ -1585,19 +1693,51 @@ namespace lithostress
     if (next_start.size() == problem.dof_handler.n_dofs())
       kept->solution = next_start;
     next_start.clear();
-    SlidingContext<dim> c(
-      parameters, problem, faults, history, report, progress, *kept);
-    bool converged = false;
-    try
+    Settings                             settings = parameters;
+    const TrilinosWrappers::MPI::Vector  start    = kept->solution;
+    std::unique_ptr<SlidingContext<dim>> context;
+    bool                                 converged           = false;
+    unsigned int                         diverged_iterations = 0;
+    std::vector<double>                  phase_times(4, 0.);
+    for (;;)
       {
-        converged = newton ? solve_by_newton(c) : solve_by_thesis_iteration(c);
+        context = std::make_unique<SlidingContext<dim>>(
+          settings, problem, faults, history, report, progress, *kept);
+        try
+          {
+            converged = newton ? solve_by_newton(*context)
+                               : solve_by_thesis_iteration(*context);
+          }
+        catch (...)
+          {
+            // The kept operator may be half updated.
+            context.reset();
+            kept.reset();
+            throw;
+          }
+        if (!context->diverged)
+          break;
+        std::ostringstream line;
+        line << std::setprecision(3)
+             << "  sliding: Newton with the reaction in the tangent diverged "
+                "(residual "
+             << context->r_norm / context->f << " of the load in iteration "
+             << context->iteration
+             << "); solving again with the reactions taken as given";
+        progress(line.str());
+        diverged_iterations += context->iteration;
+        for (unsigned int k = 0; k < 4; ++k)
+          phase_times[k] += context->phase_time(k);
+        // Afresh from the start: the kept operator holds the diverged
+        // active set.
+        context.reset();
+        kept                   = std::make_unique<KeptSlidingOperator<dim>>();
+        kept->operator_version = problem.operator_version;
+        kept->dof_handler      = &problem.dof_handler;
+        kept->solution         = start;
+        settings.reaction_in_tangent = false;
       }
-    catch (...)
-      {
-        // The kept operator may be half updated.
-        kept.reset();
-        throw;
-      }
+    SlidingContext<dim> &c = *context;
     // The last iterate's slip and states: the trial history, committed by
     // the caller (or, if not converged, shown).
     for (unsigned int i = 0; i < c.n_points; ++i)
@@ -1607,15 +1747,16 @@ namespace lithostress
         history.normal_traction[i] = c.responses[i].normal_traction;
       }
     report.nonlinear_iterations =
-      std::min(c.iteration, parameters.max_iterations);
+      diverged_iterations + std::min(c.iteration, parameters.max_iterations);
     report.final_residual = c.r_norm / c.f;
     report.solve_time     = timer.wall_time();
     report.memory_bytes   = c.preconditioner_memory();
-    report.phases         = {{"sliding: assembly", c.time_assembly},
-                             {"sliding: preconditioner set-up", c.time_preconditioner},
-                             {"sliding: Krylov solves", c.time_solve},
-                             {"sliding: residuals and reactions", c.time_residual}};
-    solution              = c.u;
+    report.phases         = {
+              {"sliding: assembly", phase_times[0] + c.phase_time(0)},
+              {"sliding: preconditioner set-up", phase_times[1] + c.phase_time(1)},
+              {"sliding: Krylov solves", phase_times[2] + c.phase_time(2)},
+              {"sliding: residuals and reactions", phase_times[3] + c.phase_time(3)}};
+    solution = c.u;
     if (converged && newton)
       kept->solution = c.u;
     if (!converged)
@@ -1650,13 +1791,27 @@ namespace lithostress
   {
     if (settings.preconditioner != Preconditioner::automatic)
       return settings.preconditioner;
-    if (n_ranks == 1 && n_dofs <= settings.direct_limit)
+    if (n_ranks == 1 && n_dofs <= settings.direct_limit &&
+        (!contact || n_dofs <= settings.multigrid_limit))
       return Preconditioner::direct;
     // The two fields' multigrid where no factorisation is taken, in exact
     // contact (the spring's stiff pairs need the AMG's ILU smoothing): on
     // 2 ranks the thrust fault at 106 k DoFs took 7.5 s with it (206 CG
     // iterations) against 15.7 s with the AMG (1 138).
     return contact ? Preconditioner::multigrid : Preconditioner::amg;
+  }
+
+  template <int dim>
+  bool
+  FrictionalSlidingSolver<dim>::hands_over_to_direct(
+    const Settings               &settings,
+    const bool                    contact,
+    const types::global_dof_index n_dofs,
+    const unsigned int            n_ranks)
+  {
+    return settings.preconditioner == Preconditioner::automatic && contact &&
+           n_ranks == 1 && n_dofs > settings.multigrid_limit &&
+           n_dofs <= settings.direct_limit;
   }
 
   template class FrictionalSlidingSolver<2>;

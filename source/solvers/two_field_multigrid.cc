@@ -12,6 +12,8 @@
 
 #include <EpetraExt_MatrixMatrix.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <set>
@@ -270,6 +272,169 @@ namespace lithostress
 
   template <int dim>
   void
+  TwoFieldMultigrid<dim>::group_nodes(const unsigned int level)
+  {
+    const DoFHandler<dim> &dofs    = *level_dofs[level];
+    const IndexSet        &mine    = owned[level];
+    const bool             coarser = level + 1 < n_levels();
+    // Support points from the cells' vertices (d-linear), on a grid far
+    // finer than the mesh: the two sides' cells give a fault node's
+    // point up to rounding, which the grid absorbs (a node it split
+    // would be two blocks, a weaker but still symmetric smoother).
+    const double grid =
+      1e-6 * GridTools::minimal_cell_diameter(dofs.get_triangulation());
+    using Key = std::array<long long, dim>;
+    std::vector<std::pair<Key, unsigned int>> points;
+    points.reserve(mine.n_elements());
+    std::vector<bool>                    done(mine.n_elements(), false);
+    std::vector<types::global_dof_index> indices;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        if ((!coarser && !cell->is_locally_owned()) ||
+            cell->get_fe().n_dofs_per_cell() == 0)
+          continue;
+        const FiniteElement<dim> &element = cell->get_fe();
+        indices.resize(element.n_dofs_per_cell());
+        cell->get_dof_indices(indices);
+        for (unsigned int i = 0; i < indices.size(); ++i)
+          {
+            if (!mine.is_element(indices[i]))
+              continue;
+            const auto position = mine.index_within_set(indices[i]);
+            if (done[position])
+              continue;
+            done[position]         = true;
+            const Point<dim> &unit = element.get_unit_support_points()[i];
+            Point<dim>        x;
+            for (const unsigned int v : cell->vertex_indices())
+              x += GeometryInfo<dim>::d_linear_shape_function(unit, v) *
+                   cell->vertex(v);
+            Key key;
+            for (unsigned int d = 0; d < dim; ++d)
+              key[d] = std::llround(x[d] / grid);
+            points.emplace_back(key, position);
+          }
+      }
+    AssertThrow(points.size() == mine.n_elements(), ExcInternalError());
+    std::sort(points.begin(), points.end());
+    // The nodes in the order of their first DoF, so that the smoother
+    // reads and writes the vectors nearly in sequence.
+    std::vector<std::pair<unsigned int, std::size_t>> nodes;
+    for (std::size_t k = 0; k < points.size(); ++k)
+      if (k == 0 || points[k].first != points[k - 1].first)
+        nodes.emplace_back(points[k].second, k);
+      else
+        nodes.back().first = std::min(nodes.back().first, points[k].second);
+    std::sort(nodes.begin(), nodes.end());
+    auto &[first, members] = nodes_of_level[level];
+    first.clear();
+    members.clear();
+    for (const auto &[smallest, k] : nodes)
+      {
+        first.push_back(members.size());
+        for (std::size_t j = k;
+             j < points.size() && points[j].first == points[k].first;
+             ++j)
+          members.push_back(points[j].second);
+      }
+    first.push_back(members.size());
+  }
+
+  template <int dim>
+  typename TwoFieldMultigrid<dim>::NodalBlockInverse
+  TwoFieldMultigrid<dim>::block_inverse(const unsigned int level,
+                                        const Matrix      &a) const
+  {
+    const auto &[first, members]   = nodes_of_level[level];
+    const Epetra_CrsMatrix &epetra = a.trilinos_matrix();
+    NodalBlockInverse       blocks;
+    blocks.offsets = first;
+    blocks.dofs    = members;
+    blocks.matrix_offsets.assign(1, 0);
+    FullMatrix<double>        block, inverse;
+    std::vector<int>          columns_of;
+    std::vector<unsigned int> active;
+    for (unsigned int k = 0; k + 1 < first.size(); ++k)
+      {
+        const unsigned int n = first[k + 1] - first[k];
+        // The members' local column indices (each row has its own: the
+        // diagonal).
+        columns_of.resize(n);
+        for (unsigned int i = 0; i < n; ++i)
+          columns_of[i] = epetra.LCID(epetra.GRID64(members[first[k] + i]));
+        block.reinit(n, n);
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            int     length  = 0;
+            double *values  = nullptr;
+            int    *columns = nullptr;
+            epetra.ExtractMyRowView(members[first[k] + i],
+                                    length,
+                                    values,
+                                    columns);
+            for (int e = 0; e < length; ++e)
+              for (unsigned int j = 0; j < n; ++j)
+                if (columns[e] == columns_of[j])
+                  block(i, j) += values[e];
+          }
+        // A DoF no coarse function reaches (a hanging node of a coarser
+        // level) has a zero row: the smoother leaves it at zero.
+        active.clear();
+        for (unsigned int i = 0; i < n; ++i)
+          if (block(i, i) != 0)
+            active.push_back(i);
+        inverse.reinit(active.size(), active.size());
+        for (unsigned int i = 0; i < active.size(); ++i)
+          for (unsigned int j = 0; j < active.size(); ++j)
+            inverse(i, j) = block(active[i], active[j]);
+        if (!active.empty())
+          inverse.gauss_jordan();
+        block = 0;
+        for (unsigned int i = 0; i < active.size(); ++i)
+          for (unsigned int j = 0; j < active.size(); ++j)
+            block(active[i], active[j]) = inverse(i, j);
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            blocks.inverses.push_back(block(i, j));
+        blocks.matrix_offsets.push_back(blocks.inverses.size());
+      }
+    return blocks;
+  }
+
+  template <int dim>
+  void
+  TwoFieldMultigrid<dim>::NodalBlockInverse::vmult(Vector       &dst,
+                                                   const Vector &src) const
+  {
+    Assert(&dst != &src, ExcInternalError());
+    const double *s = src.begin();
+    double       *d = dst.begin();
+    for (std::size_t k = 0; k + 1 < offsets.size(); ++k)
+      {
+        const unsigned int  first = offsets[k];
+        const unsigned int  n     = offsets[k + 1] - first;
+        const unsigned int *i     = &dofs[first];
+        const double       *m     = &inverses[matrix_offsets[k]];
+        if (n == 2)
+          {
+            // A node off the fault in 2-D.
+            const double s0 = s[i[0]], s1 = s[i[1]];
+            d[i[0]] = m[0] * s0 + m[1] * s1;
+            d[i[1]] = m[2] * s0 + m[3] * s1;
+            continue;
+          }
+        for (unsigned int r = 0; r < n; ++r)
+          {
+            double sum = 0;
+            for (unsigned int c = 0; c < n; ++c)
+              sum += m[r * n + c] * s[i[c]];
+            d[i[r]] = sum;
+          }
+      }
+  }
+
+  template <int dim>
+  void
   TwoFieldMultigrid<dim>::make_hierarchy(const DoFHandler<dim> &dof_handler,
                                          const hp::FECollection<dim> &fe)
   {
@@ -308,6 +473,9 @@ namespace lithostress
         level_dofs[level]   = dofs.get();
         coarser_dofs[level] = std::move(dofs);
       }
+    nodes_of_level.assign(n, {});
+    for (unsigned int level = 1; level < n; ++level)
+      group_nodes(level);
     prolongations.clear();
     prolongations.resize(n);
     for (unsigned int level = 1; level + 1 < n; ++level)
@@ -460,21 +628,13 @@ namespace lithostress
           }
         if (level == 0)
           continue;
-        // A DoF no coarse function reaches (a hanging node of a coarser
-        // level) has a zero row: the smoother leaves it at zero.
-        Vector    inverse_diagonal(residuals[level]);
-        const int error = a.trilinos_matrix().ExtractDiagonalCopy(
-          *inverse_diagonal.trilinos_vector()(0));
-        AssertThrow(error == 0, ExcTrilinosError(error));
-        for (auto &d : inverse_diagonal)
-          d = d != 0 ? 1. / d : 0.;
         typename Smoother::AdditionalData data;
-        data.degree                  = settings.smoother_degree;
-        data.smoothing_range         = settings.smoothing_range;
-        data.eig_cg_n_iterations     = 12;
-        data.preconditioner          = std::make_shared<InverseDiagonal>();
-        data.preconditioner->inverse = inverse_diagonal;
-        smoothers[level]             = std::make_unique<Smoother>();
+        data.degree              = settings.smoother_degree;
+        data.smoothing_range     = settings.smoothing_range;
+        data.eig_cg_n_iterations = 12;
+        data.preconditioner =
+          std::make_shared<NodalBlockInverse>(block_inverse(level, a));
+        smoothers[level] = std::make_unique<Smoother>();
         smoothers[level]->initialize(a, data);
       }
 

@@ -106,10 +106,13 @@ namespace lithostress
       bool reaction_in_tangent = true;
       /** The preconditioner of each step's Krylov solve (`Linear
        * solver`); automatic: the factorisation on one rank up to
-       * direct_limit DoFs, above and on more ranks the two fields'
-       * multigrid in exact contact, the AMG with the normal spring. */
-      Preconditioner preconditioner = Preconditioner::automatic;
-      double         direct_limit   = 2e6;
+       * multigrid_limit DoFs (direct_limit with the normal spring), the
+       * two fields' multigrid above it in exact contact, handing over to
+       * the factorisation up to direct_limit where it is slow, and on
+       * more ranks the multigrid, or the AMG with the normal spring. */
+      Preconditioner preconditioner  = Preconditioner::automatic;
+      double         direct_limit    = 2e6;
+      double         multigrid_limit = 2e5;
       /** Degree of the two fields' multigrid's Chebyshev smoother
        * (`Multigrid smoother degree`). */
       unsigned int smoother_degree = 4;
@@ -121,18 +124,42 @@ namespace lithostress
     /**
      * The preconditioner `automatic` stands for, for a model of
      * @p n_dofs DoFs on @p n_ranks ranks, in exact contact or not
-     * (@p contact): the factorisation on one rank up to the Direct solver
-     * limit; above it and on several ranks the two fields' multigrid in
-     * exact contact, the AMG with the thesis's normal spring (whose stiff
-     * pairs the multigrid's point smoother does not damp). Any other
-     * choice is returned as it is. The sliding steps and the dual problems
-     * of goal-oriented refinement take the same.
+     * (@p contact): the factorisation on one rank up to the Multigrid
+     * limit in exact contact (the Direct solver limit with the thesis's
+     * normal spring, whose stiff pairs the multigrid's smoother does not
+     * damp); above it and on several ranks the two fields' multigrid in
+     * exact contact, the AMG with the spring. Any other choice is
+     * returned as it is. The sliding steps and the dual problems of
+     * goal-oriented refinement take the same; the sliding steps hand a
+     * slow multigrid over to the factorisation up to the Direct solver
+     * limit on one rank (hands_over_to_direct()).
      */
     static Preconditioner
     chosen_preconditioner(const Settings               &settings,
                           const bool                    contact,
                           const types::global_dof_index n_dofs,
                           const unsigned int            n_ranks);
+
+    /**
+     * Whether `automatic`'s multigrid (chosen_preconditioner()) may hand
+     * over to the factorisation: on one rank, in exact contact, up to the
+     * Direct solver limit. The sliding solver does so when the
+     * multigrid's second solve on an operator takes more than
+     * slow_multigrid_iterations.
+     */
+    static bool
+    hands_over_to_direct(const Settings               &settings,
+                         const bool                    contact,
+                         const types::global_dof_index n_dofs,
+                         const unsigned int            n_ranks);
+
+    /** Iterations of the multigrid's second solve above which
+     * hands_over_to_direct() takes the factorisation: a V-cycle costs
+     * about 13 products with the assembled matrix, and on the thesis's
+     * thin layers a Newton step with the kept Cholesky factor costs
+     * about as much as 8 V-cycles (the thrust fault at 1.65 M DoFs:
+     * 8.5 s per step against 1.1 s per iteration; doc/performance.md). */
+    static constexpr unsigned int slow_multigrid_iterations = 8;
 
     /** Declare `Faults/Sliding solver`: the method, its tolerances and
      * the linear solver of each step (thesis §5.5). */

@@ -34,9 +34,14 @@ namespace lithostress
    * coarse level carries the fault's state as the fine tangent has it:
    * sliding, stuck, open, and exact contact's ties, which the condensed
    * fine matrix has eliminated. Without the stiff normal springs of the
-   * thesis's law (exact contact) the matrix has no stiff pairs, and
-   * Chebyshev smoothing on the diagonal damps the oscillatory error as on
-   * an unfaulted body; the coarsest mesh is solved by UMFPACK.
+   * thesis's law (exact contact) the fine matrix has no stiff pairs, and
+   * Chebyshev smoothing damps the oscillatory error as on an unfaulted
+   * body. Its preconditioner is the inverse of each node's block (the
+   * DoFs at one support point, of both fields at the fault): a coarse
+   * function that breaks a tie is condensed into a boundary layer one
+   * fine cell wide, so the coarser operators couple the two fields' DoFs
+   * at a fault node stiffly, by a factor that doubles with every level.
+   * The coarsest mesh is solved by UMFPACK.
    *
    * On several ranks the coarser levels' meshes and DoFs are whole on
    * every rank (built from the refined cells of all ranks), their
@@ -97,22 +102,31 @@ namespace lithostress
   private:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    /** Point Jacobi: the inverse diagonal (0 on a zero row). deal.II's
-     * DiagonalMatrix is serial-only inside PreconditionChebyshev. */
-    struct InverseDiagonal
+    /**
+     * Nodal block Jacobi: the inverse of the matrix block of all DoFs at
+     * one support point (both components, and both fields where a fault
+     * passes), 0 on a zero row. At a fault node exact contact ties the
+     * two fields' normal displacements, which the coarser levels' Galerkin
+     * operators carry as a stiff coupling of the node's DoFs: a point
+     * Jacobi smoother damps it poorly, the node's block takes it together.
+     */
+    struct NodalBlockInverse
     {
-      Vector inverse;
+      /** The local indices of each block's DoFs, block b at
+       * dofs[offsets[b]] to dofs[offsets[b + 1]]. */
+      std::vector<unsigned int> offsets, dofs;
+      /** Each block's inverse, row by row, block b from
+       * inverses[matrix_offsets[b]]. */
+      std::vector<std::size_t> matrix_offsets;
+      std::vector<double>      inverses;
+
       void
-      vmult(Vector &dst, const Vector &src) const
-      {
-        dst = src;
-        dst.scale(inverse);
-      }
+      vmult(Vector &dst, const Vector &src) const;
     };
 
     using Smoother = PreconditionChebyshev<TrilinosWrappers::SparseMatrix,
                                            Vector,
-                                           InverseDiagonal>;
+                                           NodalBlockInverse>;
     using Matrix   = TrilinosWrappers::SparseMatrix;
     using Transfers =
       std::vector<std::vector<std::pair<types::global_dof_index, double>>>;
@@ -139,6 +153,15 @@ namespace lithostress
                      const IndexSet &coarse_owned,
                      Matrix         &result);
 
+    /** The local indices of the DoFs this rank owns on @p level grouped
+     * by support point (nodes_of_level[level]). */
+    void
+    group_nodes(const unsigned int level);
+
+    /** The smoother's blocks of level matrix @p a on @p level. */
+    NodalBlockInverse
+    block_inverse(const unsigned int level, const Matrix &a) const;
+
     void
     v_cycle(const unsigned int level, Vector &x, const Vector &b) const;
 
@@ -146,6 +169,10 @@ namespace lithostress
     std::vector<std::unique_ptr<DoFHandler<dim>>>    coarser_dofs;
     std::vector<const DoFHandler<dim> *>             level_dofs;
     std::vector<AffineConstraints<double>>           hanging_nodes;
+    /** Each level's owned DoFs by support point: the local indices of
+     * node k at nodes_of_level[level].second[first[k]...first[k + 1]]. */
+    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>>
+      nodes_of_level;
     /** The DoFs of each level a rank owns in the level operators: the
      * finest level's own, a contiguous range of each coarser one (whole
      * on every rank). */
