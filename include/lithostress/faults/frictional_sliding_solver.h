@@ -126,9 +126,9 @@ namespace lithostress
      * @p n_dofs DoFs on @p n_ranks ranks, in exact contact or not
      * (@p contact): the factorisation on one rank up to the Multigrid
      * limit in exact contact (the Direct solver limit with the thesis's
-     * normal spring, whose stiff pairs the multigrid's smoother does not
-     * damp); above it and on several ranks the two fields' multigrid in
-     * exact contact, the AMG with the spring. Any other choice is
+     * normal spring); above it and on several ranks the two fields'
+     * multigrid in exact contact, the AMG with the spring. Any other
+     * choice is
      * returned as it is. The sliding steps and the dual problems of
      * goal-oriented refinement take the same; the sliding steps hand a
      * slow multigrid over to the factorisation up to the Direct solver
