@@ -18,6 +18,7 @@
 #include <lithostress/solvers/sparse_cholesky.h>
 #include <lithostress/solvers/two_field_multigrid.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -284,6 +285,16 @@ namespace lithostress
   template <int dim>
   struct KeptSlidingOperator
   {
+    /** Nothing kept yet, for @p problem's operator, the next solve
+     * starting from @p solution (empty: none). */
+    KeptSlidingOperator(const DiscreteProblem<dim>          &problem,
+                        const TrilinosWrappers::MPI::Vector &solution)
+        : operator_version(problem.operator_version)
+        , dof_handler(&problem.dof_handler)
+        , solution(solution)
+    {
+    }
+
     /** The operator (DiscreteProblem::operator_version) and DoF handler it
      * was made for. */
     unsigned long long     operator_version = 0;
@@ -622,14 +633,28 @@ namespace lithostress
       double time_assembly = 0, time_preconditioner = 0, time_solve = 0,
              time_residual = 0;
 
-      /** The phase times above by index, in that order. */
-      double
-      phase_time(const unsigned int k) const
+      /** The times above added to @p phases, by name (entries made as
+       * needed). */
+      void
+      add_phase_times(std::vector<std::pair<std::string, double>> &phases) const
       {
-        return k == 0   ? time_assembly
-               : k == 1 ? time_preconditioner
-               : k == 2 ? time_solve
-                        : time_residual;
+        for (const auto &[name, seconds] :
+             {std::make_pair("sliding: assembly", time_assembly),
+              std::make_pair("sliding: preconditioner set-up",
+                             time_preconditioner),
+              std::make_pair("sliding: Krylov solves", time_solve),
+              std::make_pair("sliding: residuals and reactions",
+                             time_residual)})
+          {
+            auto phase =
+              std::find_if(phases.begin(), phases.end(), [&](const auto &p) {
+                return p.first == name;
+              });
+            if (phase == phases.end())
+              phases.emplace_back(name, seconds);
+            else
+              phase->second += seconds;
+          }
       }
 
     private:
@@ -1685,11 +1710,8 @@ namespace lithostress
     report.linear_solves = 0;
     Timer timer(problem.dof_handler.get_communicator(), true);
     if (!kept || !kept->made_for(problem))
-      {
-        kept                   = std::make_unique<KeptSlidingOperator<dim>>();
-        kept->operator_version = problem.operator_version;
-        kept->dof_handler      = &problem.dof_handler;
-      }
+      kept = std::make_unique<KeptSlidingOperator<dim>>(
+        problem, TrilinosWrappers::MPI::Vector());
     if (next_start.size() == problem.dof_handler.n_dofs())
       kept->solution = next_start;
     next_start.clear();
@@ -1698,7 +1720,6 @@ namespace lithostress
     std::unique_ptr<SlidingContext<dim>> context;
     bool                                 converged           = false;
     unsigned int                         diverged_iterations = 0;
-    std::vector<double>                  phase_times(4, 0.);
     for (;;)
       {
         context = std::make_unique<SlidingContext<dim>>(
@@ -1726,15 +1747,11 @@ namespace lithostress
              << "); solving again with the reactions taken as given";
         progress(line.str());
         diverged_iterations += context->iteration;
-        for (unsigned int k = 0; k < 4; ++k)
-          phase_times[k] += context->phase_time(k);
+        context->add_phase_times(report.phases);
         // Afresh from the start: the kept operator holds the diverged
         // active set.
         context.reset();
-        kept                   = std::make_unique<KeptSlidingOperator<dim>>();
-        kept->operator_version = problem.operator_version;
-        kept->dof_handler      = &problem.dof_handler;
-        kept->solution         = start;
+        kept = std::make_unique<KeptSlidingOperator<dim>>(problem, start);
         settings.reaction_in_tangent = false;
       }
     SlidingContext<dim> &c = *context;
@@ -1751,11 +1768,7 @@ namespace lithostress
     report.final_residual = c.r_norm / c.f;
     report.solve_time     = timer.wall_time();
     report.memory_bytes   = c.preconditioner_memory();
-    report.phases         = {
-              {"sliding: assembly", phase_times[0] + c.phase_time(0)},
-              {"sliding: preconditioner set-up", phase_times[1] + c.phase_time(1)},
-              {"sliding: Krylov solves", phase_times[2] + c.phase_time(2)},
-              {"sliding: residuals and reactions", phase_times[3] + c.phase_time(3)}};
+    c.add_phase_times(report.phases);
     solution = c.u;
     if (converged && newton)
       kept->solution = c.u;

@@ -271,8 +271,8 @@ namespace lithostress
   }
 
   template <int dim>
-  void
-  TwoFieldMultigrid<dim>::group_nodes(const unsigned int level)
+  typename TwoFieldMultigrid<dim>::Nodes
+  TwoFieldMultigrid<dim>::group_nodes(const unsigned int level) const
   {
     const DoFHandler<dim> &dofs    = *level_dofs[level];
     const IndexSet        &mine    = owned[level];
@@ -319,25 +319,24 @@ namespace lithostress
     std::sort(points.begin(), points.end());
     // The nodes in the order of their first DoF, so that the smoother
     // reads and writes the vectors nearly in sequence.
-    std::vector<std::pair<unsigned int, std::size_t>> nodes;
+    std::vector<std::pair<unsigned int, std::size_t>> starts;
     for (std::size_t k = 0; k < points.size(); ++k)
       if (k == 0 || points[k].first != points[k - 1].first)
-        nodes.emplace_back(points[k].second, k);
+        starts.emplace_back(points[k].second, k);
       else
-        nodes.back().first = std::min(nodes.back().first, points[k].second);
-    std::sort(nodes.begin(), nodes.end());
-    auto &[first, members] = nodes_of_level[level];
-    first.clear();
-    members.clear();
-    for (const auto &[smallest, k] : nodes)
+        starts.back().first = std::min(starts.back().first, points[k].second);
+    std::sort(starts.begin(), starts.end());
+    Nodes grouped;
+    for (const auto &[smallest, k] : starts)
       {
-        first.push_back(members.size());
+        grouped.offsets.push_back(grouped.dofs.size());
         for (std::size_t j = k;
              j < points.size() && points[j].first == points[k].first;
              ++j)
-          members.push_back(points[j].second);
+          grouped.dofs.push_back(points[j].second);
       }
-    first.push_back(members.size());
+    grouped.offsets.push_back(grouped.dofs.size());
+    return grouped;
   }
 
   template <int dim>
@@ -345,12 +344,11 @@ namespace lithostress
   TwoFieldMultigrid<dim>::block_inverse(const unsigned int level,
                                         const Matrix      &a) const
   {
-    const auto &[first, members]   = nodes_of_level[level];
-    const Epetra_CrsMatrix &epetra = a.trilinos_matrix();
+    const auto             &first   = nodes[level].offsets;
+    const auto             &members = nodes[level].dofs;
+    const Epetra_CrsMatrix &epetra  = a.trilinos_matrix();
     NodalBlockInverse       blocks;
-    blocks.offsets = first;
-    blocks.dofs    = members;
-    blocks.matrix_offsets.assign(1, 0);
+    blocks.nodes = &nodes[level];
     FullMatrix<double>        block, inverse;
     std::vector<int>          columns_of;
     std::vector<unsigned int> active;
@@ -396,7 +394,6 @@ namespace lithostress
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             blocks.inverses.push_back(block(i, j));
-        blocks.matrix_offsets.push_back(blocks.inverses.size());
       }
     return blocks;
   }
@@ -407,29 +404,30 @@ namespace lithostress
                                                    const Vector &src) const
   {
     Assert(&dst != &src, ExcInternalError());
-    const double *s = src.begin();
-    double       *d = dst.begin();
+    const double *s       = src.begin();
+    double       *d       = dst.begin();
+    const auto   &offsets = nodes->offsets;
+    const double *m       = inverses.data();
     for (std::size_t k = 0; k + 1 < offsets.size(); ++k)
       {
-        const unsigned int  first = offsets[k];
-        const unsigned int  n     = offsets[k + 1] - first;
-        const unsigned int *i     = &dofs[first];
-        const double       *m     = &inverses[matrix_offsets[k]];
+        const unsigned int  n = offsets[k + 1] - offsets[k];
+        const unsigned int *i = &nodes->dofs[offsets[k]];
         if (n == 2)
           {
             // A node off the fault in 2-D.
             const double s0 = s[i[0]], s1 = s[i[1]];
             d[i[0]] = m[0] * s0 + m[1] * s1;
             d[i[1]] = m[2] * s0 + m[3] * s1;
-            continue;
           }
-        for (unsigned int r = 0; r < n; ++r)
-          {
-            double sum = 0;
-            for (unsigned int c = 0; c < n; ++c)
-              sum += m[r * n + c] * s[i[c]];
-            d[i[r]] = sum;
-          }
+        else
+          for (unsigned int r = 0; r < n; ++r)
+            {
+              double sum = 0;
+              for (unsigned int c = 0; c < n; ++c)
+                sum += m[r * n + c] * s[i[c]];
+              d[i[r]] = sum;
+            }
+        m += n * n;
       }
   }
 
@@ -473,9 +471,11 @@ namespace lithostress
         level_dofs[level]   = dofs.get();
         coarser_dofs[level] = std::move(dofs);
       }
-    nodes_of_level.assign(n, {});
+    // The smoothers point into the nodes: made again by initialize().
+    smoothers.clear();
+    nodes.assign(n, Nodes());
     for (unsigned int level = 1; level < n; ++level)
-      group_nodes(level);
+      nodes[level] = group_nodes(level);
     prolongations.clear();
     prolongations.resize(n);
     for (unsigned int level = 1; level + 1 < n; ++level)

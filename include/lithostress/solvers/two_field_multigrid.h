@@ -102,6 +102,14 @@ namespace lithostress
   private:
     using Vector = TrilinosWrappers::MPI::Vector;
 
+    /** The DoFs this rank owns on a level grouped by support point: the
+     * local indices of node k at dofs[offsets[k]] to dofs[offsets[k + 1]],
+     * the nodes in the order of their first DoF. */
+    struct Nodes
+    {
+      std::vector<unsigned int> offsets, dofs;
+    };
+
     /**
      * Nodal block Jacobi: the inverse of the matrix block of all DoFs at
      * one support point (both components, and both fields where a fault
@@ -112,13 +120,10 @@ namespace lithostress
      */
     struct NodalBlockInverse
     {
-      /** The local indices of each block's DoFs, block b at
-       * dofs[offsets[b]] to dofs[offsets[b + 1]]. */
-      std::vector<unsigned int> offsets, dofs;
-      /** Each block's inverse, row by row, block b from
-       * inverses[matrix_offsets[b]]. */
-      std::vector<std::size_t> matrix_offsets;
-      std::vector<double>      inverses;
+      /** The level's nodes (TwoFieldMultigrid::nodes). */
+      const Nodes *nodes = nullptr;
+      /** Each node's inverse block, row by row, one after the other. */
+      std::vector<double> inverses;
 
       void
       vmult(Vector &dst, const Vector &src) const;
@@ -153,10 +158,9 @@ namespace lithostress
                      const IndexSet &coarse_owned,
                      Matrix         &result);
 
-    /** The local indices of the DoFs this rank owns on @p level grouped
-     * by support point (nodes_of_level[level]). */
-    void
-    group_nodes(const unsigned int level);
+    /** The DoFs this rank owns on @p level grouped by support point. */
+    Nodes
+    group_nodes(const unsigned int level) const;
 
     /** The smoother's blocks of level matrix @p a on @p level. */
     NodalBlockInverse
@@ -169,10 +173,8 @@ namespace lithostress
     std::vector<std::unique_ptr<DoFHandler<dim>>>    coarser_dofs;
     std::vector<const DoFHandler<dim> *>             level_dofs;
     std::vector<AffineConstraints<double>>           hanging_nodes;
-    /** Each level's owned DoFs by support point: the local indices of
-     * node k at nodes_of_level[level].second[first[k]...first[k + 1]]. */
-    std::vector<std::pair<std::vector<unsigned int>, std::vector<unsigned int>>>
-      nodes_of_level;
+    /** Each level's owned DoFs by support point (group_nodes()). */
+    std::vector<Nodes> nodes;
     /** The DoFs of each level a rank owns in the level operators: the
      * finest level's own, a contiguous range of each coarser one (whole
      * on every rank). */
