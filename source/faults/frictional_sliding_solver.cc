@@ -333,8 +333,10 @@ namespace lithostress
     unsigned int multigrid_solves   = 0;
     bool         multigrid_declined = false;
     /** The last converged Newton solution, where the next solve starts
-     * (empty: none yet). */
+     * (empty: none yet), or the start given for it: a coarser mesh's
+     * solution, or the time loop's extrapolation (`predicted_start`). */
     TrilinosWrappers::MPI::Vector solution;
+    bool                          predicted_start = false;
 
     /** Whether it was made for @p problem's operator. */
     bool
@@ -1375,10 +1377,11 @@ namespace lithostress
       if (c.nested_start)
         {
           std::ostringstream line;
-          line << "  sliding: Newton starts from the last mesh's solution: "
-                  "residual "
-               << std::setprecision(3) << c.r_norm / c.f << ", "
-               << c.count_states();
+          line << "  sliding: Newton starts from "
+               << (c.kept.predicted_start ? "the last steps' extrapolation"
+                                          : "the last mesh's solution")
+               << ": residual " << std::setprecision(3) << c.r_norm / c.f
+               << ", " << c.count_states();
           c.progress(line.str());
         }
       // Whether the last iteration changed exact contact's open nodes (the
@@ -1712,8 +1715,17 @@ namespace lithostress
     if (!kept || !kept->made_for(problem))
       kept = std::make_unique<KeptSlidingOperator<dim>>(
         problem, TrilinosWrappers::MPI::Vector());
+    // Newton starts from a coarser mesh's solution (nested iteration), or
+    // in the time loop from the last steps' extrapolation
+    // (SolutionPredictor), or from the kept operator's last solution.
+    kept->predicted_start = false;
     if (next_start.size() == problem.dof_handler.n_dofs())
       kept->solution = next_start;
+    else if (problem.initial_guess != nullptr && newton)
+      {
+        kept->solution        = *problem.initial_guess;
+        kept->predicted_start = true;
+      }
     next_start.clear();
     Settings                             settings = parameters;
     const TrilinosWrappers::MPI::Vector  start    = kept->solution;

@@ -68,6 +68,7 @@ namespace lithostress
     phase_done("sparsity pattern and matrix");
     // The previous mesh's solution; solve() sizes it anew.
     present_solution.clear();
+    predictor.clear();
     stats.dofs       = dofs.n_dofs();
     stats.cells      = model.triangulation.n_global_active_cells();
     stats.setup_time = clock.wall_time();
@@ -158,6 +159,7 @@ namespace lithostress
     ElasticAssembler<dim> assembler(model.fe_space, model.stress_model, loads);
     assembler.set_history_strain(history);
     assembled_history = history;
+    assembled_time    = time;
     // The matrix only where the operator changed (the time loop assembles
     // many right-hand sides for one operator).
     const bool with_matrix =
@@ -184,11 +186,30 @@ namespace lithostress
     // the ghosted solution is made after it: the peak memory of the solve
     // holds neither.
     TrilinosWrappers::MPI::Vector owned_solution;
+    // In the time loop, iterative solves and Newton's method start from
+    // the last steps' solutions extrapolated to this step.
+    DiscreteProblem<dim>          problem = discrete_problem();
+    TrilinosWrappers::MPI::Vector guess;
+    if (keep_setup && predictor.available())
+      {
+        guess.reinit(system.locally_owned, model.communicator);
+        predictor.predict(assembled_time, guess);
+        // The linear solvers' condensed system decouples the constrained
+        // DoFs (zero in the guess); Newton's iterate satisfies them.
+        if (model.faults.needs_sliding_solver())
+          system.constraints.distribute(guess);
+        else
+          system.constraints.set_zero(guess);
+        problem.initial_guess = &guess;
+      }
     if (model.faults.needs_sliding_solver())
-      solve_sliding(owned_solution, commit, on_failure);
+      solve_sliding(problem, owned_solution, commit, on_failure);
     else
-      stats.solver = solver->solve(discrete_problem(), owned_solution);
+      stats.solver = solver->solve(problem, owned_solution);
+    guess.clear();
     system.constraints.distribute(owned_solution);
+    if (keep_setup)
+      predictor.record(assembled_time, owned_solution);
     const double norm = owned_solution.l2_norm();
     if (!std::isfinite(norm))
       throw ComputationError("the solution of the linear system is not "
@@ -206,13 +227,14 @@ namespace lithostress
   template <int dim>
   void
   ElasticProblem<dim>::solve_sliding(
+    const DiscreteProblem<dim>    &problem,
     TrilinosWrappers::MPI::Vector &owned_solution,
     const bool                     commit,
     const std::function<void()>   &on_failure)
   {
     try
       {
-        sliding_solver.solve(discrete_problem(),
+        sliding_solver.solve(problem,
                              model.faults,
                              slip_history,
                              owned_solution,

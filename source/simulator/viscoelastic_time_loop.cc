@@ -259,11 +259,25 @@ namespace lithostress
     });
     // The mesh with its fields: readable on any number of ranks.
     parts.creep.prepare_for_checkpoint();
+    // The displacement, then the predictor's solutions (ghosted copies:
+    // the transfer reads every DoF of the owned cells).
+    const SolutionPredictor &predictor = parts.problem.solution_predictor();
+    std::vector<TrilinosWrappers::MPI::Vector> ghosted;
+    for (const auto *v : predictor.solutions())
+      {
+        ghosted.push_back(parts.problem.solution());
+        ghosted.back() = *v;
+      }
+    std::vector<const TrilinosWrappers::MPI::Vector *> attached = {
+      &parts.problem.solution()};
+    for (const auto &v : ghosted)
+      attached.push_back(&v);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
       displacement(parts.problem.dof_handler());
-    displacement.prepare_for_serialization(parts.problem.solution());
+    displacement.prepare_for_serialization(attached);
     parts.problem.triangulation().save(directory + "/mesh");
     LoopState state;
+    state.predictor_times = predictor.times();
     for (const auto &r : parts.problem.fault_slip().gather(comm))
       state.fault_slip.insert(state.fault_slip.end(), r.begin(), r.end());
     state.step          = step;
@@ -318,10 +332,18 @@ namespace lithostress
     problem.setup(t);
     parts.creep.load_from_checkpoint(state.previous_dt);
     parallel::distributed::SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>
-                                  displacement(problem.dof_handler());
-    TrilinosWrappers::MPI::Vector owned(
-      problem.dof_handler().locally_owned_dofs(), a.communicator);
-    displacement.deserialize(owned);
+      displacement(problem.dof_handler());
+    std::vector<TrilinosWrappers::MPI::Vector> fields(
+      1 + state.predictor_times.size(),
+      TrilinosWrappers::MPI::Vector(problem.dof_handler().locally_owned_dofs(),
+                                    a.communicator));
+    std::vector<TrilinosWrappers::MPI::Vector *> into;
+    for (auto &v : fields)
+      into.push_back(&v);
+    displacement.deserialize(into);
+    const TrilinosWrappers::MPI::Vector owned = fields[0];
+    fields.erase(fields.begin());
+    problem.solution_predictor().restore(state.predictor_times, fields);
     IndexSet relevant;
     DoFTools::extract_locally_relevant_dofs(problem.dof_handler(), relevant);
     problem.solution().reinit(problem.dof_handler().locally_owned_dofs(),

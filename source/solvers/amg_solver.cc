@@ -54,7 +54,8 @@ namespace lithostress
                                name(),
                                dof_handler.get_communicator(),
                                solution,
-                               report);
+                               report,
+                               problem.initial_guess);
     report.solve_time = timer.wall_time();
     if (problem.keep_setup)
       {

@@ -243,6 +243,10 @@ namespace lithostress
       system_operator->initialize_dof_vector(x);
       copy_owned_entries(problem.system.locally_owned, problem.system.rhs, rhs);
       problem.system.rhs.clear();
+      if (problem.initial_guess != nullptr)
+        copy_owned_entries(problem.system.locally_owned,
+                           *problem.initial_guess,
+                           x);
 
       if (!reuse)
         preconditioner =

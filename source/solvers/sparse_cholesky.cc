@@ -82,6 +82,54 @@ namespace lithostress
             }
         p[row + 1] = k;
       }
+    factorize_upper_triangle(csc);
+  }
+
+  void
+  SparseCholesky::factorize(const SparseMatrix<double> &matrix)
+  {
+    const SuiteSparse_long n   = matrix.m();
+    SuiteSparse_long       nnz = 0;
+    for (SuiteSparse_long row = 0; row < n; ++row)
+      for (auto e = matrix.begin(row); e != matrix.end(row); ++e)
+        nnz += (static_cast<SuiteSparse_long>(e->column()) <= row);
+    cholmod_sparse *csc = cholmod_l_allocate_sparse(
+      n, n, nnz, true, true, 1, CHOLMOD_REAL, &data->common);
+    if (!csc)
+      throw ComputationError("the sparse Cholesky factorisation could not "
+                             "allocate the matrix (" +
+                             std::to_string(nnz) + " entries)");
+    auto *p = static_cast<SuiteSparse_long *>(csc->p);
+    auto *i = static_cast<SuiteSparse_long *>(csc->i);
+    auto *x = static_cast<double *>(csc->x);
+    p[0]    = 0;
+    for (SuiteSparse_long row = 0; row < n; ++row)
+      {
+        // deal.II stores the diagonal first, then the columns in order:
+        // the column of the upper triangle wants its row indices sorted,
+        // so the diagonal goes last.
+        SuiteSparse_long k = p[row];
+        for (auto e = matrix.begin(row); e != matrix.end(row); ++e)
+          if (static_cast<SuiteSparse_long>(e->column()) < row)
+            {
+              i[k]   = e->column();
+              x[k++] = e->value();
+            }
+        i[k]       = row;
+        x[k++]     = matrix.diag_element(row);
+        p[row + 1] = k;
+      }
+    factorize_upper_triangle(csc);
+  }
+
+  void
+  SparseCholesky::factorize_upper_triangle(void *upper)
+  {
+    auto                  *csc = static_cast<cholmod_sparse *>(upper);
+    const SuiteSparse_long n   = csc->nrow;
+    const SuiteSparse_long nnz = static_cast<SuiteSparse_long *>(csc->p)[n];
+    const auto            *i   = static_cast<const SuiteSparse_long *>(csc->i);
+    const auto            *p   = static_cast<const SuiteSparse_long *>(csc->p);
     // The ordering and symbolic factorisation once per sparsity.
     std::size_t structure = std::hash<SuiteSparse_long>()(n);
     for (SuiteSparse_long k = 0; k < nnz; ++k)
@@ -110,12 +158,25 @@ namespace lithostress
   SparseCholesky::vmult(TrilinosWrappers::MPI::Vector       &dst,
                         const TrilinosWrappers::MPI::Vector &src) const
   {
+    solve_arrays(src.trilinos_vector()[0], dst.trilinos_vector()[0]);
+  }
+
+  void
+  SparseCholesky::solve(dealii::Vector<double> &rhs_and_solution) const
+  {
+    AssertDimension(rhs_and_solution.size(), static_cast<std::size_t>(data->n));
+    solve_arrays(rhs_and_solution.data(), rhs_and_solution.data());
+  }
+
+  void
+  SparseCholesky::solve_arrays(const double *b_values, double *x_values) const
+  {
     cholmod_dense b;
     b.nrow  = data->n;
     b.ncol  = 1;
     b.nzmax = data->n;
     b.d     = data->n;
-    b.x     = const_cast<double *>(src.trilinos_vector()[0]);
+    b.x     = const_cast<double *>(b_values);
     b.z     = nullptr;
     b.xtype = CHOLMOD_REAL;
     b.dtype = CHOLMOD_DOUBLE;
@@ -123,7 +184,7 @@ namespace lithostress
       cholmod_l_solve(CHOLMOD_A, data->factor, &b, &data->common);
     AssertThrow(solution, ExcMessage("CHOLMOD's solve failed"));
     const double *values = static_cast<const double *>(solution->x);
-    std::copy(values, values + data->n, dst.trilinos_vector()[0]);
+    std::copy(values, values + data->n, x_values);
     cholmod_l_free_dense(&solution, &data->common);
   }
 

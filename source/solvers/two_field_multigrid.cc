@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <lithostress/base/input_error.h>
 #include <lithostress/solvers/two_field_multigrid.h>
 
 #include <EpetraExt_MatrixMatrix.h>
@@ -23,6 +24,24 @@ namespace lithostress
 {
   namespace
   {
+    /** Whether @p a equals its transpose to round-off (1e-12 of the
+     * largest entry of the row): a Galerkin product of a symmetric
+     * operator is symmetric up to the order of its sums. */
+    bool
+    is_symmetric(const SparseMatrix<double> &a)
+    {
+      for (unsigned int row = 0; row < a.m(); ++row)
+        {
+          double largest = 0;
+          for (auto e = a.begin(row); e != a.end(row); ++e)
+            largest = std::max(largest, std::abs(e->value()));
+          for (auto e = a.begin(row); e != a.end(row); ++e)
+            if (std::abs(e->value() - a.el(e->column(), row)) > 1e-12 * largest)
+              return false;
+        }
+      return true;
+    }
+
     /**
      * Calls @p visit(coarse, fine, child) for each locally owned active
      * cell @p fine of @p fine_dofs with the active cell @p coarse of
@@ -671,7 +690,18 @@ namespace lithostress
     for (types::global_dof_index i = 0; i < n0; ++i)
       if (coarse_matrix.diag_element(i) == 0)
         coarse_matrix.set(i, i, 1.);
-    coarse_solver.initialize(coarse_matrix);
+    coarse_by_cholesky = is_symmetric(coarse_matrix);
+    if (coarse_by_cholesky)
+      try
+        {
+          coarse_cholesky.factorize(coarse_matrix);
+        }
+      catch (const ComputationError &)
+        {
+          coarse_by_cholesky = false;
+        }
+    if (!coarse_by_cholesky)
+      coarse_lu.initialize(coarse_matrix);
   }
 
   template <int dim>
@@ -690,7 +720,10 @@ namespace lithostress
           values[i] = b[i];
         if (Utilities::MPI::n_mpi_processes(b.get_mpi_communicator()) > 1)
           Utilities::MPI::sum(values, b.get_mpi_communicator(), values);
-        coarse_solver.solve(values);
+        if (coarse_by_cholesky)
+          coarse_cholesky.solve(values);
+        else
+          coarse_lu.solve(values);
         for (const auto i : x.locally_owned_elements())
           x[i] = values[i];
         x.compress(VectorOperation::insert);
@@ -720,7 +753,8 @@ namespace lithostress
   TwoFieldMultigrid<dim>::memory_consumption() const
   {
     std::size_t bytes =
-      coarse_matrix.memory_consumption() + coarse_pattern.memory_consumption();
+      coarse_matrix.memory_consumption() + coarse_pattern.memory_consumption() +
+      (coarse_by_cholesky ? coarse_cholesky.memory_consumption() : 0);
     for (const auto &m : prolongations)
       if (m)
         bytes += m->memory_consumption();

@@ -52,7 +52,8 @@ namespace lithostress
                                name(),
                                comm,
                                solution,
-                               report);
+                               report,
+                               problem.initial_guess);
     report.solve_time   = timer.wall_time();
     report.memory_bytes = multigrid->memory_consumption();
     // Elastic cycles release the levels before the next mesh.

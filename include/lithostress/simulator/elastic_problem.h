@@ -19,6 +19,7 @@
 #include <lithostress/postprocessors/simulator_access.h>
 #include <lithostress/refinement/stress_goals.h>
 #include <lithostress/solvers/linear_solver.h>
+#include <lithostress/time_integration/solution_predictor.h>
 
 #include <functional>
 #include <memory>
@@ -161,6 +162,14 @@ namespace lithostress
       return present_solution;
     }
 
+    /** The last solutions the time loop's iterative solves and Newton
+     * steps start from (saved and restored by its checkpoints). */
+    SolutionPredictor &
+    solution_predictor()
+    {
+      return predictor;
+    }
+
     FaultSlipHistory &
     fault_slip()
     {
@@ -197,9 +206,11 @@ namespace lithostress
     void
     make_constraints(const double time);
 
-    /** Solve with the sliding iteration of the frictional faults. */
+    /** Solve @p problem with the sliding iteration of the frictional
+     * faults. */
     void
-    solve_sliding(TrilinosWrappers::MPI::Vector &owned_solution,
+    solve_sliding(const DiscreteProblem<dim>    &problem,
+                  TrilinosWrappers::MPI::Vector &owned_solution,
                   const bool                     commit,
                   const std::function<void()>   &on_failure);
 
@@ -235,6 +246,12 @@ namespace lithostress
     unsigned long long matrix_version = ~0ULL;
     /** The history strain of the last assembly (nullptr: none). */
     const CreepStrain<dim> *assembled_history = nullptr;
+    /** The model time of the last assembly. */
+    double assembled_time = 0;
+    /** The time loop's last solutions on this mesh, where its iterative
+     * solves and the faults' Newton method start from (kept only while
+     * solvers keep their set-up). */
+    SolutionPredictor predictor;
   };
 } // namespace lithostress
 

@@ -11,7 +11,8 @@
 namespace lithostress
 {
   /**
-   * CG on @p system's matrix from a zero guess, preconditioned by
+   * CG on @p system's matrix from @p initial_guess (nullptr: zero),
+   * preconditioned by
    * @p preconditioner, until ‖r‖ ≤ @p relative_tolerance ‖f‖
    * (unpreconditioned residual), at most @p max_iterations; @p solution
    * is sized to the owned DoFs. The iterations and the final relative
@@ -28,9 +29,12 @@ namespace lithostress
                              const std::string             &name,
                              const MPI_Comm                 communicator,
                              TrilinosWrappers::MPI::Vector &solution,
-                             SolverReport                  &report)
+                             SolverReport                  &report,
+                             const TrilinosWrappers::MPI::Vector *initial_guess)
   {
     solution.reinit(system.locally_owned, communicator);
+    if (initial_guess != nullptr)
+      solution = *initial_guess;
     const double rhs_norm = system.rhs.l2_norm();
     check_right_hand_side(rhs_norm);
     SolverControl                           control(max_iterations,

@@ -1,8 +1,10 @@
 #ifndef lithostress_solvers_sparse_cholesky_h
 #define lithostress_solvers_sparse_cholesky_h
 
+#include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
 #include <memory>
 
@@ -38,6 +40,17 @@ namespace lithostress
     void
     factorize(const TrilinosWrappers::SparseMatrix &matrix);
 
+    /** Factorise the serial @p matrix (its entries on and below the
+     * diagonal are read; the caller knows it is symmetric): the two
+     * fields' multigrid's coarsest level. Throws ComputationError as
+     * above. */
+    void
+    factorize(const SparseMatrix<double> &matrix);
+
+    /** @p rhs_and_solution := A⁻¹ @p rhs_and_solution (serial). */
+    void
+    solve(dealii::Vector<double> &rhs_and_solution) const;
+
     /** @p dst := A⁻¹ @p src with the last factorisation. */
     void
     vmult(TrilinosWrappers::MPI::Vector       &dst,
@@ -49,6 +62,16 @@ namespace lithostress
 
   private:
     struct Data;
+
+    /** Factorise the upper triangle @p upper (CHOLMOD's compressed
+     * columns, which it frees), the ordering kept for the same sparsity. */
+    void
+    factorize_upper_triangle(void *upper);
+
+    /** x := A⁻¹ b for arrays of the matrix's size. */
+    void
+    solve_arrays(const double *b, double *x) const;
+
     std::unique_ptr<Data> data;
   };
 } // namespace lithostress

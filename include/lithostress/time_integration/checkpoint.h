@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <boost/serialization/version.hpp>
+
 #include <mpi.h>
 
 #include <map>
@@ -51,14 +53,20 @@ namespace lithostress
     std::vector<StepRecord>            steps;
     std::vector<double>                fault_slip;
     std::map<std::string, std::string> postprocessors;
+    /** The times of the solutions the SolutionPredictor knew, whose
+     * vectors are attached to the mesh after the displacement (version 1;
+     * a version-0 checkpoint has none). */
+    std::vector<double> predictor_times;
 
     /** boost::serialization of the state. */
     template <class Archive>
     void
-    serialize(Archive &archive, const unsigned int)
+    serialize(Archive &archive, const unsigned int version)
     {
       archive &step &linear_solves &time &dt &strain_scale &stress_scale
         &previous_dt &steps &fault_slip &postprocessors;
+      if (version > 0)
+        archive &predictor_times;
     }
   };
 
@@ -116,5 +124,7 @@ namespace lithostress
                  const std::string &directory);
   };
 } // namespace lithostress
+
+BOOST_CLASS_VERSION(lithostress::LoopState, 1)
 
 #endif
