@@ -9,6 +9,29 @@
 
 namespace lithostress
 {
+  namespace
+  {
+    /** The upper triangle of an n × n symmetric matrix with @p nnz entries
+     * in CHOLMOD's compressed columns (row indices in each column sorted
+     * if @p sorted), its first column offset zero; throws
+     * ComputationError if the memory is not there. */
+    cholmod_sparse *
+    allocate_upper_triangle(const SuiteSparse_long n,
+                            const SuiteSparse_long nnz,
+                            const bool             sorted,
+                            cholmod_common        &common)
+    {
+      cholmod_sparse *csc = cholmod_l_allocate_sparse(
+        n, n, nnz, sorted, true, 1, CHOLMOD_REAL, &common);
+      if (!csc)
+        throw ComputationError("the sparse Cholesky factorisation could not "
+                               "allocate the matrix (" +
+                               std::to_string(nnz) + " entries)");
+      static_cast<SuiteSparse_long *>(csc->p)[0] = 0;
+      return csc;
+    }
+  } // namespace
+
   /** CHOLMOD's workspace, the matrix in its compressed-column form and the
    * factor (64-bit indices: the cholmod_l_ routines). */
   struct SparseCholesky::Data
@@ -57,16 +80,10 @@ namespace lithostress
         for (int j = 0; j < length; ++j)
           nnz += (A.GCID64(columns[j]) <= row);
       }
-    cholmod_sparse *csc = cholmod_l_allocate_sparse(
-      n, n, nnz, false, true, 1, CHOLMOD_REAL, &data->common);
-    if (!csc)
-      throw ComputationError("the sparse Cholesky factorisation could not "
-                             "allocate the matrix (" +
-                             std::to_string(nnz) + " entries)");
-    auto *p = static_cast<SuiteSparse_long *>(csc->p);
-    auto *i = static_cast<SuiteSparse_long *>(csc->i);
-    auto *x = static_cast<double *>(csc->x);
-    p[0]    = 0;
+    cholmod_sparse *csc = allocate_upper_triangle(n, nnz, false, data->common);
+    auto           *p   = static_cast<SuiteSparse_long *>(csc->p);
+    auto           *i   = static_cast<SuiteSparse_long *>(csc->i);
+    auto           *x   = static_cast<double *>(csc->x);
     for (int row = 0; row < n; ++row)
       {
         int     length;
@@ -93,16 +110,10 @@ namespace lithostress
     for (SuiteSparse_long row = 0; row < n; ++row)
       for (auto e = matrix.begin(row); e != matrix.end(row); ++e)
         nnz += (static_cast<SuiteSparse_long>(e->column()) <= row);
-    cholmod_sparse *csc = cholmod_l_allocate_sparse(
-      n, n, nnz, true, true, 1, CHOLMOD_REAL, &data->common);
-    if (!csc)
-      throw ComputationError("the sparse Cholesky factorisation could not "
-                             "allocate the matrix (" +
-                             std::to_string(nnz) + " entries)");
-    auto *p = static_cast<SuiteSparse_long *>(csc->p);
-    auto *i = static_cast<SuiteSparse_long *>(csc->i);
-    auto *x = static_cast<double *>(csc->x);
-    p[0]    = 0;
+    cholmod_sparse *csc = allocate_upper_triangle(n, nnz, true, data->common);
+    auto           *p   = static_cast<SuiteSparse_long *>(csc->p);
+    auto           *i   = static_cast<SuiteSparse_long *>(csc->i);
+    auto           *x   = static_cast<double *>(csc->x);
     for (SuiteSparse_long row = 0; row < n; ++row)
       {
         // deal.II stores the diagonal first, then the columns in order:
