@@ -139,10 +139,11 @@ namespace lithostress
      * with (nullptr: none), for a solver that assembles again with other
      * constraints (exact fault contact). */
     const CreepStrain<dim> *history_strain = nullptr;
-    /** Where an iterative solver starts (owned entries, zero at
-     * constrained DoFs; nullptr: from zero): the time loop's prediction of
-     * the solution from its last steps (SolutionPredictor). Direct solvers
-     * ignore it. */
+    /** Where an iterative solver starts (owned entries; nullptr: from
+     * zero): the time loop's prediction of the solution from its last
+     * steps (SolutionPredictor), zero at constrained DoFs for the linear
+     * solvers, with the constraints distributed for the faults' Newton
+     * method. Direct solvers ignore it. */
     const TrilinosWrappers::MPI::Vector *initial_guess = nullptr;
   };
 

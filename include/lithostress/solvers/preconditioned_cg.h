@@ -12,9 +12,9 @@ namespace lithostress
 {
   /**
    * CG on @p system's matrix from @p initial_guess (nullptr: zero),
-   * preconditioned by
-   * @p preconditioner, until ‖r‖ ≤ @p relative_tolerance ‖f‖
-   * (unpreconditioned residual), at most @p max_iterations; @p solution
+   * preconditioned by @p preconditioner, until
+   * ‖r‖ ≤ @p relative_tolerance ‖f‖ (unpreconditioned residual), at most
+   * @p max_iterations; @p solution
    * is sized to the owned DoFs. The iterations and the final relative
    * residual go to @p report. A solve that does not converge throws
    * ComputationError naming @p name and the entries to change; an
