@@ -192,14 +192,8 @@ namespace lithostress
     TrilinosWrappers::MPI::Vector guess;
     if (keep_setup && predictor.available())
       {
-        guess.reinit(system.locally_owned, model.communicator);
         predictor.predict(assembled_time, guess);
-        // The linear solvers' condensed system decouples the constrained
-        // DoFs (zero in the guess); Newton's iterate satisfies them.
-        if (model.faults.needs_sliding_solver())
-          system.constraints.distribute(guess);
-        else
-          system.constraints.set_zero(guess);
+        system.constraints.distribute(guess);
         problem.initial_guess = &guess;
       }
     if (model.faults.needs_sliding_solver())

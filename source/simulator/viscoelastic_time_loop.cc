@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace lithostress
 {
@@ -341,7 +342,7 @@ namespace lithostress
     for (auto &v : fields)
       into.push_back(&v);
     displacement.deserialize(into);
-    const TrilinosWrappers::MPI::Vector owned = fields[0];
+    const TrilinosWrappers::MPI::Vector owned = std::move(fields[0]);
     fields.erase(fields.begin());
     problem.solution_predictor().restore(state.predictor_times, fields);
     IndexSet relevant;

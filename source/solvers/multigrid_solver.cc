@@ -244,9 +244,12 @@ namespace lithostress
       copy_owned_entries(problem.system.locally_owned, problem.system.rhs, rhs);
       problem.system.rhs.clear();
       if (problem.initial_guess != nullptr)
-        copy_owned_entries(problem.system.locally_owned,
-                           *problem.initial_guess,
-                           x);
+        {
+          copy_owned_entries(problem.system.locally_owned,
+                             *problem.initial_guess,
+                             x);
+          problem.system.constraints.set_zero(x);
+        }
 
       if (!reuse)
         preconditioner =

@@ -139,11 +139,11 @@ namespace lithostress
      * with (nullptr: none), for a solver that assembles again with other
      * constraints (exact fault contact). */
     const CreepStrain<dim> *history_strain = nullptr;
-    /** Where an iterative solver starts (owned entries; nullptr: from
-     * zero): the time loop's prediction of the solution from its last
-     * steps (SolutionPredictor), zero at constrained DoFs for the linear
-     * solvers, with the constraints distributed for the faults' Newton
-     * method. Direct solvers ignore it. */
+    /** Where an iterative solver starts (owned entries, constraints
+     * distributed; nullptr: from zero): the time loop's prediction of the
+     * solution from its last steps (SolutionPredictor). CG on the
+     * condensed system zeroes the constrained DoFs of its copy (the
+     * system decouples them); direct solvers ignore it. */
     const TrilinosWrappers::MPI::Vector *initial_guess = nullptr;
   };
 

@@ -11,14 +11,13 @@
 namespace lithostress
 {
   /**
-   * CG on @p system's matrix from @p initial_guess (nullptr: zero),
-   * preconditioned by @p preconditioner, until
-   * ‖r‖ ≤ @p relative_tolerance ‖f‖ (unpreconditioned residual), at most
-   * @p max_iterations; @p solution
-   * is sized to the owned DoFs. The iterations and the final relative
-   * residual go to @p report. A solve that does not converge throws
-   * ComputationError naming @p name and the entries to change; an
-   * interrupted one RunInterrupted (stop_on_signal()).
+   * CG on @p system's matrix from @p initial_guess (nullptr: zero; its
+   * constrained DoFs set to zero), preconditioned by @p preconditioner,
+   * until ‖r‖ ≤ @p relative_tolerance ‖f‖ (unpreconditioned residual), at
+   * most @p max_iterations; @p solution is sized to the owned DoFs. The
+   * iterations and the final relative residual go to @p report. A solve that
+   * does not converge throws ComputationError naming @p name and the entries to
+   * change; an interrupted one RunInterrupted (stop_on_signal()).
    */
   template <int dim, typename Preconditioner>
   void
@@ -34,7 +33,10 @@ namespace lithostress
   {
     solution.reinit(system.locally_owned, communicator);
     if (initial_guess != nullptr)
-      solution = *initial_guess;
+      {
+        solution = *initial_guess;
+        system.constraints.set_zero(solution);
+      }
     const double rhs_norm = system.rhs.l2_norm();
     check_right_hand_side(rhs_norm);
     SolverControl                           control(max_iterations,

@@ -45,8 +45,8 @@ namespace lithostress
       return n_recorded > 0;
     }
 
-    /** The guess at @p time into @p guess (owned entries); requires
-     * available(). */
+    /** The guess at @p time into @p guess (sized here; owned entries);
+     * requires available(). */
     void
     predict(const double time, TrilinosWrappers::MPI::Vector &guess) const;
 
