@@ -13,7 +13,7 @@ namespace lithostress
                                               const unsigned int n_fields)
       : polynomial_degree(degree)
       , n_displacement_fields(n_fields)
-      , mapping_q(std::make_unique<MappingQ<dim>>(mapping_degree))
+      , mapping_q(std::make_unique<CachedMappingQ<dim>>(mapping_degree))
       , mappings(*mapping_q)
   {
     const FE_Q<dim> q(degree);

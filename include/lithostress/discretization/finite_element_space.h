@@ -8,6 +8,8 @@
 #include <deal.II/hp/mapping_collection.h>
 #include <deal.II/hp/q_collection.h>
 
+#include <lithostress/discretization/cached_mapping.h>
+
 #include <memory>
 
 namespace lithostress
@@ -25,7 +27,8 @@ namespace lithostress
    *
    * Also holds the mapping of degree `Mapping degree` (2 by default), used
    * for assembly, errors and output so that curved cells follow their
-   * manifolds.
+   * manifolds; it keeps each cell's support points while the mesh stands
+   * (cache_mapping_of()).
    */
   template <int dim>
   class FiniteElementSpace
@@ -45,6 +48,14 @@ namespace lithostress
     mapping() const
     {
       return *mapping_q;
+    }
+
+    /** Lets the mapping keep the support points of @p triangulation's
+     * cells from one mesh change to the next (CachedMappingQ). */
+    void
+    cache_mapping_of(const Triangulation<dim> &triangulation)
+    {
+      mapping_q->attach(triangulation);
     }
 
     const hp::MappingCollection<dim> &
@@ -96,12 +107,12 @@ namespace lithostress
     }
 
   private:
-    unsigned int                   polynomial_degree;
-    unsigned int                   n_displacement_fields;
-    hp::FECollection<dim>          fe;
-    std::unique_ptr<MappingQ<dim>> mapping_q;
-    hp::MappingCollection<dim>     mappings;
-    std::vector<Point<dim>>        scalar_support_points;
+    unsigned int                         polynomial_degree;
+    unsigned int                         n_displacement_fields;
+    hp::FECollection<dim>                fe;
+    std::unique_ptr<CachedMappingQ<dim>> mapping_q;
+    hp::MappingCollection<dim>           mappings;
+    std::vector<Point<dim>>              scalar_support_points;
   };
 } // namespace lithostress
 
