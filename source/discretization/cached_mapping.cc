@@ -1,5 +1,3 @@
-#include <deal.II/grid/manifold.h>
-
 #include <lithostress/discretization/cached_mapping.h>
 
 namespace lithostress
@@ -37,21 +35,19 @@ namespace lithostress
   {
     std::lock_guard<std::mutex> lock(cache->mutex);
     cache->on_change.disconnect();
-    cache->valid         = false;
-    cache->triangulation = nullptr;
+    cache->valid = false;
     cache->points.clear();
-    bool curved = false;
-    for (const types::manifold_id id : triangulation.get_manifold_ids())
-      if (id != numbers::flat_manifold_id &&
-          dynamic_cast<const FlatManifold<dim> *>(
-            &triangulation.get_manifold(id)) == nullptr)
-        curved = true;
-    if (!curved)
-      return;
     cache->triangulation = &triangulation;
     Cache *const c       = cache.get();
     cache->on_change =
       triangulation.signals.any_change.connect([c]() { c->valid = false; });
+  }
+
+  template <int dim>
+  bool
+  CachedMappingQ<dim>::holds(const Triangulation<dim> &triangulation) const
+  {
+    return cache->triangulation == &triangulation;
   }
 
   template <int dim>

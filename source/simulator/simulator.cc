@@ -184,7 +184,8 @@ namespace lithostress
       std::make_unique<FiniteElementSpace<dim>>(degree,
                                                 curved ? mapping_degree : 1,
                                                 faults.active() ? 2 : 1);
-    fe_space->cache_mapping_of(triangulation);
+    if (curved)
+      fe_space->cache_mapping_of(triangulation);
   }
 
   template <int dim>

@@ -7,8 +7,8 @@
  * 2. after global refinement, adaptive refinement and coarsening, which
  *    renumber the cells (the cache is filled again after each change);
  * 3. in FEValues: the quadrature points and JxW of every active cell;
- * 4. for a cell of another triangulation it was not attached to, and on a
- *    flat mesh, whose points it does not cache.
+ * 4. for a cell of another triangulation it was not attached to, and
+ *    after it was attached to another mesh.
  * Prints "FAILED" and exits 1 on any failure.
  */
 #include <deal.II/base/quadrature_lib.h>
@@ -80,6 +80,7 @@ main()
   CachedMappingQ<2>      mapping(2);
   const ReferenceMapping reference(2);
   mapping.attach(disc);
+  check(mapping.holds(disc), "the disc's points come from the cache");
   // A copy (as hp::MappingCollection makes) shares the cache.
   const auto copy = mapping.clone();
   check(same_mapping(disc, mapping, reference), "coarse disc");
@@ -103,7 +104,7 @@ main()
   disc.execute_coarsening_and_refinement();
   check(same_mapping(disc, mapping, reference), "coarsened where y < 0");
 
-  // A triangulation it was not attached to, and a flat one attached.
+  // A triangulation it was not attached to, then another one attached.
   Triangulation<2> other;
   GridGenerator::hyper_ball(other, Point<2>(1., 1.), 0.5);
   other.refine_global(1);
@@ -112,7 +113,9 @@ main()
   GridGenerator::hyper_cube(square);
   square.refine_global(2);
   mapping.attach(square);
-  check(same_mapping(square, mapping, reference), "a flat mesh");
+  check(mapping.holds(square) && !mapping.holds(disc),
+        "attached to a square, the cache left the disc");
+  check(same_mapping(square, mapping, reference), "the square");
   check(same_mapping(disc, mapping, reference),
         "the disc after the mapping left it");
 

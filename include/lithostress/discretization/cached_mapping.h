@@ -25,13 +25,16 @@ namespace lithostress
    * integration of every time step. The cached points are those MappingQ
    * computes, so results are unchanged bit for bit.
    *
-   * The cache holds the triangulation given to attach(), and only if one of
-   * its cells lies on a curved manifold (on flat meshes the points are cheap
-   * and the cache would only cost memory). It is filled on first use after
-   * each change of the mesh (Triangulation::Signals::any_change), under a
-   * lock, so that threads assembling in parallel wait for the whole cache.
-   * Cells of other triangulations are mapped as by MappingQ. Copies (clone())
-   * share the cache.
+   * The cache holds the triangulation given to attach() (the simulator
+   * attaches only a mesh with a curved manifold: on flat ones the points are
+   * cheap and the cache would only cost memory). It is filled on first use
+   * after each change of the mesh (Triangulation::Signals::any_change),
+   * under a lock, so that threads assembling in parallel wait for the whole
+   * cache. Cells of other triangulations are mapped as by MappingQ. Copies
+   * (clone()) share the cache. deal.II's MappingQCache empties its cache on
+   * a change of the mesh and must then be initialised again before any use,
+   * at every place that refines, coarsens or loads the mesh; filling on
+   * first use needs no such hook.
    */
   template <int dim>
   class CachedMappingQ : public MappingQ<dim>
@@ -47,15 +50,19 @@ namespace lithostress
     clone() const override;
 
     /**
-     * Caches the support points of @p triangulation's cells from now on
-     * (if it has a curved manifold), filled again after each change of it.
-     * @p triangulation must outlive the mapping's use.
+     * Caches the support points of @p triangulation's cells from now on,
+     * filled again after each change of it. @p triangulation must outlive
+     * the mapping's use.
      */
     void
     attach(const Triangulation<dim> &triangulation);
 
+    /** Whether the points of @p triangulation's cells come from the cache. */
+    bool
+    holds(const Triangulation<dim> &triangulation) const;
+
     /** The cached points of @p cell, or MappingQ's for a cell of another
-     * triangulation or a flat one. */
+     * triangulation. */
     std::vector<Point<dim>>
     compute_mapping_support_points(
       const typename Triangulation<dim>::cell_iterator &cell) const override;
