@@ -179,7 +179,9 @@ namespace lithostress
                       "Eisenstat & Walker 1996): those steps are not solved "
                       "to round-off. A step whose states stood still may be "
                       "the last and is solved to the Linear solver "
-                      "tolerance (unless friction limits follow contact "
+                      "tolerance, as is the first step from the time loop's "
+                      "extrapolation where its states are the last "
+                      "solution's (unless friction limits follow contact "
                       "reactions the tangent takes as given: Reaction in "
                       "tangent = false); so is every step with 0.");
     prm.declare_entry("Reaction in tangent",
@@ -337,6 +339,11 @@ namespace lithostress
      * solution, or the time loop's extrapolation (`predicted_start`). */
     TrilinosWrappers::MPI::Vector solution;
     bool                          predicted_start = false;
+    /** The points' states at that converged solution (this rank's points),
+     * against which a warm start's states are compared
+     * (solve_by_newton()), and whether there is one (on every rank). */
+    std::vector<SlipState> converged_states;
+    bool                   has_converged_states = false;
 
     /** Whether it was made for @p problem's operator. */
     bool
@@ -529,6 +536,20 @@ namespace lithostress
             newton_states[i] = responses[i].state;
           }
         return Utilities::MPI::logical_or(changed, communicator);
+      }
+
+      /** Whether the states at a warm start's iterate differ from those of
+       * the kept operator's last converged solution (true without a warm
+       * start on this operator, or with none kept): where they do not (the
+       * time loop's extrapolation on an unchanged operator), the first step
+       * may be the last and is solved to the Linear solver tolerance. */
+      bool
+      states_changed_since_converged()
+      {
+        if (!warm_start || nested_start || !kept.has_converged_states)
+          return true;
+        newton_states = kept.converged_states;
+        return states_changed();
       }
 
       /** Whether a point slides in exact contact, on any rank: its
@@ -1387,7 +1408,7 @@ namespace lithostress
       // Whether the last iteration changed exact contact's open nodes (the
       // next step satisfies other constraints than the iterate, and is
       // taken whole), and whether it changed them or a point's state.
-      bool         set_changed = false, changed = true;
+      bool set_changed = false, changed = c.states_changed_since_converged();
       const double start_norm = c.r_norm;
       for (c.iteration = 1; c.iteration <= settings.max_iterations;
            ++c.iteration)
@@ -1783,7 +1804,13 @@ namespace lithostress
     c.add_phase_times(report.phases);
     solution = c.u;
     if (converged && newton)
-      kept->solution = c.u;
+      {
+        kept->solution = c.u;
+        kept->converged_states.resize(c.n_points);
+        for (unsigned int i = 0; i < c.n_points; ++i)
+          kept->converged_states[i] = c.responses[i].state;
+        kept->has_converged_states = true;
+      }
     if (!converged)
       {
         std::ostringstream what;
