@@ -24,6 +24,10 @@ Plate coupling (§7.5), 45 degrees:
   than 5 MPa each (thesis: 17.5 and 40 MPa), and makes the subducting
   plate's lid more tensional; the slab slides down-dip beneath the
   overlying plate (the hanging wall) all along the plate boundary.
+* Without shear coupling (k_s = 1e6 N/m) the crust's deviatoric
+  compression at the right edge falls further from the locked run than
+  at 1e9, and the 45 degree pull adds less to it: the bound that explains
+  the thesis's crust rows (17.5 and < 5 MPa).
 * The same answer on 1 and 2 ranks (1e-8 of the largest stress).
 Basal shear (§7.6.1):
 * The 3.5 MPa shear on the 260.3 km base of the overlying plate is a
@@ -68,6 +72,11 @@ REFERENCE = {
     "coupling: fall in the crust": 18.58,
     "coupling: fall in the mantle": 58.95,
     "coupling: lid more tensional": 81.06 - 37.67,
+    # Deviatoric crust means at the right edge (0-35 km) without shear
+    # coupling (k_s 1e6 N/m), less the locked run's, and the 90 degree
+    # run's less it.
+    "uncoupled: fall in the crust": 11.05 + 3.05,
+    "uncoupled: compression added in the crust": 16.78 - 11.05,
     "thermal: tension at the top": 87.37,
     "thermal: compression beneath": 136.0,
 }
@@ -200,6 +209,28 @@ for x in (1, 659.7, 780, 919):
             difference = max(difference, abs(ra[key] - rb[key]))
 check(difference <= 1e-8 * largest,
       "coupling: 1 and 2 ranks agree to %.1e of the largest stress" % (difference / largest))
+
+# The plate boundary without shear coupling (k_s 1e6 N/m), the limit of
+# every shear stiffness: with the crust's deviatoric means falling
+# monotonically from locked through 1e9 to it, it bounds the crust's rows
+# of §7.5.2 (doc/thesis_comparison.md, chapter 7).
+uncoupled = experiment("subduction_coupling.prm", "coupling_1e6",
+                       ["Faults/plate_boundary/Shear stiffness=1e6"])
+crust_dev = {name: band_mean(profile(out, 919), "deviatoric_xx", 0, 35) * MPA
+             for name, out in (("locked", locked), ("1e9", weak[1]), ("1e6", uncoupled),
+                               ("90", pull[90]))}
+fall = {k: crust_dev[k] - crust_dev["locked"] for k in ("1e9", "1e6")}
+added = {k: crust_dev["90"] - crust_dev[k] for k in ("1e9", "1e6")}
+check(0 < fall["1e9"] < fall["1e6"] and 0 < added["1e6"] < added["1e9"]
+      and near(fall["1e6"], REFERENCE["uncoupled: fall in the crust"])
+      and near(added["1e6"], REFERENCE["uncoupled: compression added in the crust"],
+               crust_dev["90"]),
+      "coupling: without shear coupling (k_s 1e6 N/m) the crust's deviatoric compression at the "
+      "right edge falls by %.2f MPa from the locked run (k_s 1e9: %.2f; converged %.2f) and the 45 "
+      "degree pull still adds %.2f MPa against the 90 degree run (k_s 1e9: %.2f; converged %.2f): "
+      "the bound of every k_s that explains the thesis's 17.5 and < 5 MPa"
+      % (fall["1e6"], fall["1e9"], REFERENCE["uncoupled: fall in the crust"], added["1e6"],
+         added["1e9"], REFERENCE["uncoupled: compression added in the crust"]))
 
 # Basal shear.
 shear = experiment("subduction_basal_shear.prm", "basal_shear")
