@@ -9,6 +9,12 @@
  * 4. Restored from times() and solutions() (a checkpoint's contents), it
  *    predicts the same guess bit for bit, so that a resumed run starts its
  *    next solve where the uninterrupted one would.
+ * 5. With three solutions of u(t) = a + b t + c t² at t = 1, 2, 2.5 the
+ *    quadratic through them predicts u exactly (to round-off) at t = 3.5;
+ *    a step retried (t = 2.2), a step more than four times the last
+ *    (t = 5), or steps whose lengths differ by more than four (t = 1, 2,
+ *    10) take the linear extrapolation of the last two instead; restored
+ *    from its three times and solutions it predicts bit for bit.
  * Prints "FAILED" and exits 1 on any failure.
  */
 #include <deal.II/base/index_set.h>
@@ -43,6 +49,82 @@ namespace
       u[i] = std::sin(i) + std::cos(3. * i) * t;
     u.compress(VectorOperation::insert);
     return u;
+  }
+
+  /** u(t) = a + b t + c t² with c_i = 0.3 sin(2 i + 1). */
+  TrilinosWrappers::MPI::Vector
+  quadratic_in_time(const IndexSet &owned, const double t)
+  {
+    TrilinosWrappers::MPI::Vector u(owned, MPI_COMM_SELF);
+    for (unsigned int i = 0; i < n; ++i)
+      u[i] = std::sin(i) + std::cos(3. * i) * t +
+             0.3 * std::sin(2. * i + 1.) * t * t;
+    u.compress(VectorOperation::insert);
+    return u;
+  }
+
+  /** Largest |a_i − b_i|. */
+  double
+  difference(const TrilinosWrappers::MPI::Vector &a,
+             const TrilinosWrappers::MPI::Vector &b)
+  {
+    double e = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      e = std::max(e, std::abs(a[i] - b[i]));
+    return e;
+  }
+
+  /** The linear extrapolation of u at t1 and t2 to t. */
+  TrilinosWrappers::MPI::Vector
+  linear_guess(const IndexSet &owned,
+               const double    t1,
+               const double    t2,
+               const double    t)
+  {
+    const double                  r = (t - t2) / (t2 - t1);
+    TrilinosWrappers::MPI::Vector g = quadratic_in_time(owned, t2);
+    g.sadd(1. + r, -r, quadratic_in_time(owned, t1));
+    return g;
+  }
+
+  /** Checks 5 (the quadratic through three solutions). */
+  void
+  check_three_solutions(const IndexSet &owned)
+  {
+    TrilinosWrappers::MPI::Vector guess(owned, MPI_COMM_SELF);
+    SolutionPredictor             predictor;
+    for (const double t : {1., 2., 2.5})
+      predictor.record(t, quadratic_in_time(owned, t));
+    predictor.predict(3.5, guess);
+    check(difference(guess, quadratic_in_time(owned, 3.5)) < 1e-13,
+          "three solutions of a quadratic in time: extrapolated exactly to "
+          "t = 3.5");
+    predictor.predict(2.2, guess);
+    check(difference(guess, linear_guess(owned, 2., 2.5, 2.2)) < 1e-14,
+          "a step retried (t = 2.2) interpolates the last two linearly");
+    predictor.predict(5., guess);
+    check(difference(guess, linear_guess(owned, 2., 2.5, 4.5)) < 1e-13,
+          "a step five times the last takes the clamped linear guess");
+
+    std::vector<TrilinosWrappers::MPI::Vector> saved;
+    for (const auto *v : predictor.solutions())
+      saved.push_back(*v);
+    SolutionPredictor resumed;
+    resumed.restore(predictor.times(), saved);
+    TrilinosWrappers::MPI::Vector again(owned, MPI_COMM_SELF);
+    predictor.predict(3.1, guess);
+    resumed.predict(3.1, again);
+    check(difference(guess, again) == 0 &&
+            predictor.times() == std::vector<double>({1., 2., 2.5}),
+          "restored from three times and solutions it predicts the same "
+          "guess bit for bit");
+
+    SolutionPredictor uneven;
+    for (const double t : {1., 2., 10.})
+      uneven.record(t, quadratic_in_time(owned, t));
+    uneven.predict(12., guess);
+    check(difference(guess, linear_guess(owned, 2., 10., 12.)) < 1e-12,
+          "after steps of 1 and 8 the guess is the linear one");
   }
 
   /** Largest |guess_i − u_i(t)|. */
@@ -101,6 +183,7 @@ main(int argc, char *argv[])
 
   predictor.clear();
   check(!predictor.available(), "a new mesh: no guess");
+  check_three_solutions(owned);
   if (failed)
     {
       std::cout << "FAILED" << std::endl;

@@ -11,20 +11,23 @@ namespace lithostress
 
   /**
    * The iterative solvers' starting point for the next solve of the
-   * visco-elastic loop on one mesh: the last two solutions extrapolated
-   * linearly to the new time, u(t) ≈ u₂ + (t − t₂)/(t₂ − t₁) (u₂ − u₁)
-   * (one solution: u₂ itself). The displacement relaxes smoothly between
-   * steps that the step control keeps within its creep tolerance, so the
-   * extrapolation leaves an initial residual of the order of the step's
-   * second difference instead of the whole right-hand side, and CG reaches
-   * the same stopping rule ‖r‖ ≤ tol ‖f‖ in fewer iterations; the answer
-   * is unchanged to that tolerance. The frictional faults' Newton method
-   * starts from it as well.
+   * visco-elastic loop on one mesh: the last three solutions extrapolated
+   * to the new time by the quadratic through them (Lagrange's form), or
+   * the last two linearly, u(t) ≈ u₂ + (t − t₂)/(t₂ − t₁) (u₂ − u₁) (one
+   * solution: u₂ itself). The displacement relaxes smoothly between steps
+   * that the step control keeps within its creep tolerance, so the
+   * extrapolation leaves an initial residual of the order of the steps'
+   * third (linearly: second) difference instead of the whole right-hand
+   * side, and CG reaches the same stopping rule ‖r‖ ≤ tol ‖f‖ in fewer
+   * iterations; the answer is unchanged to that tolerance. The frictional
+   * faults' Newton method starts from it as well.
    *
-   * The ratio (t − t₂)/(t₂ − t₁) is clamped to [−1, 4]: a step retried
-   * after a rejection (t₁ < t < t₂) interpolates between the accepted and
-   * the rejected solution, and an erratic history cannot throw the guess
-   * far.
+   * The quadratic is taken only for a step forward (t > t₂) at most four
+   * times the last step, after two steps whose lengths differ by at most a
+   * factor of four. Otherwise the linear ratio (t − t₂)/(t₂ − t₁) is
+   * clamped to [−1, 4]: a step retried after a rejection (t₁ < t < t₂)
+   * interpolates between the accepted and the rejected solution, and an
+   * erratic history cannot throw the guess far.
    */
   class SolutionPredictor
   {
@@ -60,16 +63,18 @@ namespace lithostress
     std::vector<const TrilinosWrappers::MPI::Vector *>
     solutions() const;
 
-    /** Start again from the @p times and @p solutions of a checkpoint. */
+    /** Start again from the @p times and @p solutions of a checkpoint (at
+     * most three, oldest first). */
     void
     restore(const std::vector<double>                        &times,
             const std::vector<TrilinosWrappers::MPI::Vector> &solutions);
 
   private:
-    /** The last solution (u₂ at t₂) and the one before (u₁ at t₁). */
-    TrilinosWrappers::MPI::Vector last, before;
-    double                        last_time = 0, before_time = 0;
-    unsigned int                  n_recorded = 0;
+    /** The last solution (u₂ at t₂), the one before (u₁ at t₁) and the one
+     * before that (u₀ at t₀). */
+    TrilinosWrappers::MPI::Vector last, before, earliest;
+    double       last_time = 0, before_time = 0, earliest_time = 0;
+    unsigned int n_recorded = 0;
   };
 } // namespace lithostress
 
