@@ -18,7 +18,9 @@ words). This script runs the models that answer them:
              with convergence factors 1, 2, 3 and 15, and the graben widths
              of tables 6.3 and 6.4 (scripts/graben_widths.py);
   chapter 7  the eleven subduction configurations
-             (scripts/reproduce_subduction.py);
+             (scripts/reproduce_subduction.py), and the coupling without
+             shear (k_s = 1e6 N/m, elastic), the bound of every shear
+             stiffness for the crust's rows of §7.5.2;
 
 and writes OUTDIR/thesis_comparison.csv with the columns
 
