@@ -14,6 +14,16 @@
  *
  * LITHOSTRESS_HUGE_PAGES=off runs the program without huge pages; a
  * glibc.malloc.hugetlb setting already in GLIBC_TUNABLES is respected.
+ *
+ * A run started without mpirun is an MPI singleton. Open MPI's defaults
+ * then fork a runtime daemon and load its network transports (libfabric,
+ * PSM2, TCP) and hwloc's GPU plugins, 0.67 s before the first line of
+ * lithostress against 0.29 s without them (doc/performance.md). One
+ * process talks only to itself, so the launcher asks for an isolated
+ * singleton with the self transport. It leaves alone runs under a
+ * launcher (mpirun, srun: the environment names a rank) and every setting
+ * the user made.
+ *
  * Debuggers and profilers can run build/lithostress-bin directly.
  */
 #include <cerrno>
@@ -49,6 +59,28 @@ namespace
     const std::string s(setting);
     return !(s == "off" || s == "0" || s == "no" || s == "false");
   }
+
+  /** Whether an MPI launcher started this process (it names a rank). */
+  bool
+  started_by_mpi_launcher()
+  {
+    for (const char *name :
+         {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+      if (std::getenv(name) != nullptr)
+        return true;
+    return false;
+  }
+
+  /** Open MPI's and hwloc's settings for a single process that starts
+   * fast, each only where the environment has none. */
+  void
+  set_singleton_defaults()
+  {
+    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+    setenv("OMPI_MCA_pml", "ob1", 0);
+    setenv("OMPI_MCA_btl", "self", 0);
+    setenv("HWLOC_PLUGINS_BLACKLIST", "hwloc_gl,hwloc_opencl", 0);
+  }
 } // namespace
 
 int
@@ -66,6 +98,8 @@ main(int, char *argv[])
           setenv("GLIBC_TUNABLES", value.c_str(), 1);
         }
     }
+  if (!started_by_mpi_launcher())
+    set_singleton_defaults();
   const std::string program = own_directory() + "/lithostress-bin";
   execv(program.c_str(), argv);
   std::cerr << "lithostress: cannot start " << program << ": "
