@@ -1,8 +1,12 @@
 #ifndef lithostress_loads_density_stripping_h
 #define lithostress_loads_density_stripping_h
 
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+
 #include <lithostress/loads/load.h>
 
+#include <memory>
 #include <vector>
 
 namespace lithostress
@@ -60,6 +64,31 @@ namespace lithostress
     /** y of depth zero [m]. */
     double depth_origin = 0;
     double length_scale = 1;
+
+    /**
+     * The sub-cell integration of one finite element (add_cell_terms()):
+     * FEValues on 16 × 16 Gauss sub-cells, built once per element and
+     * mapping degree instead of for every cell a jump of the column
+     * crosses (its construction evaluates the element and the mapping at
+     * the 1 024 points). It holds its own copy of the element and its own
+     * MappingQ of the same degree (which places the points as a
+     * CachedMappingQ does, bit for bit), so that it never outlives the
+     * objects it reads; members are destroyed from the last, the values
+     * first.
+     */
+    struct SubCellValues
+    {
+      std::unique_ptr<const FiniteElement<dim>> fe;
+      std::unique_ptr<const MappingQ<dim>>      mapping;
+      std::unique_ptr<FEValues<dim>>            values;
+    };
+
+    /** The sub-cell values for @p fe_values's element and mapping, made on
+     * first use; nullptr where the mapping is not a MappingQ. */
+    FEValues<dim> *
+    sub_cell_values(const FEValues<dim> &fe_values) const;
+
+    mutable std::vector<SubCellValues> sub_cells;
   };
 } // namespace lithostress
 
