@@ -19,6 +19,14 @@ sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import lithotest
 from lithotest import *
 
+# The settings the launcher makes, and the variables by which it knows a
+# launcher's rank, as the environment of a user who made none of them
+# (kept below only where a check sets them itself).
+for name in ("OMPI_MCA_ess_singleton_isolated", "OMPI_MCA_pml", "OMPI_MCA_btl",
+             "HWLOC_PLUGINS_BLACKLIST", "OMPI_COMM_WORLD_SIZE", "PMIX_RANK",
+             "PMI_RANK", "PMI_SIZE"):
+    os.environ.pop(name, None)
+
 LAUNCHER = lithotest.BINARY
 PROGRAM = os.path.join(os.path.dirname(LAUNCHER), "lithostress-bin")
 VERBOSE = {"OMPI_MCA_btl_base_verbose": "10", "LITHOSTRESS_HUGE_PAGES": "off"}
