@@ -167,33 +167,24 @@ namespace lithostress
         return;
       }
     add(fe_values, true, false);
-    if (FEValues<dim> *kept = sub_cell_values(fe_values))
-      {
-        kept->reinit(cell);
-        add(*kept, false, true);
-        return;
-      }
-    FEValues<dim> fine(fe_values.get_mapping(),
-                       fe_values.get_fe(),
-                       QIterated<dim>(QGauss<1>(2), 16),
-                       update_values | update_quadrature_points |
-                         update_JxW_values);
+    FEValues<dim> &fine = sub_cell_values(fe_values);
     fine.reinit(cell);
     add(fine, false, true);
   }
 
   template <int dim>
-  FEValues<dim> *
+  FEValues<dim> &
   DensityStripping<dim>::sub_cell_values(const FEValues<dim> &fe_values) const
   {
+    // The assembly's mapping is FiniteElementSpace's CachedMappingQ.
     const auto *mapping =
       dynamic_cast<const MappingQ<dim> *>(&fe_values.get_mapping());
-    if (mapping == nullptr)
-      return nullptr;
+    AssertThrow(mapping != nullptr,
+                ExcMessage("Density stripping integrates on a MappingQ."));
     for (const SubCellValues &s : sub_cells)
       if (s.mapping->get_degree() == mapping->get_degree() &&
           *s.fe == fe_values.get_fe())
-        return s.values.get();
+        return *s.values;
     SubCellValues s;
     s.fe      = fe_values.get_fe().clone();
     s.mapping = std::make_unique<MappingQ<dim>>(mapping->get_degree());
@@ -204,7 +195,7 @@ namespace lithostress
                                       update_values | update_quadrature_points |
                                         update_JxW_values);
     sub_cells.push_back(std::move(s));
-    return sub_cells.back().values.get();
+    return *sub_cells.back().values;
   }
 
   template <int dim>

@@ -83,9 +83,9 @@ namespace lithostress
       std::unique_ptr<FEValues<dim>>            values;
     };
 
-    /** The sub-cell values for @p fe_values's element and mapping, made on
-     * first use; nullptr where the mapping is not a MappingQ. */
-    FEValues<dim> *
+    /** The sub-cell values for @p fe_values's element and mapping (a
+     * MappingQ), made on first use. */
+    FEValues<dim> &
     sub_cell_values(const FEValues<dim> &fe_values) const;
 
     mutable std::vector<SubCellValues> sub_cells;
