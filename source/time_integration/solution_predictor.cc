@@ -7,31 +7,29 @@ namespace lithostress
   void
   SolutionPredictor::clear()
   {
-    last.clear();
-    before.clear();
-    earliest.clear();
-    n_recorded = 0;
+    history.clear();
+    history_times.clear();
   }
 
   void
   SolutionPredictor::record(const double                         time,
                             const TrilinosWrappers::MPI::Vector &solution)
   {
-    if (n_recorded > 0 && last.size() != solution.size())
+    if (!history.empty() && history.back().size() != solution.size())
       clear();
-    if (n_recorded > 1)
+    if (history.size() < 3)
       {
-        std::swap(earliest, before);
-        earliest_time = before_time;
+        history.push_back(solution);
+        history_times.push_back(time);
+        return;
       }
-    if (n_recorded > 0)
-      {
-        std::swap(before, last);
-        before_time = last_time;
-      }
-    last       = solution;
-    last_time  = time;
-    n_recorded = std::min(n_recorded + 1, 3u);
+    // The oldest vector takes the new solution (its memory reused).
+    std::rotate(history.begin(), history.begin() + 1, history.end());
+    std::rotate(history_times.begin(),
+                history_times.begin() + 1,
+                history_times.end());
+    history.back()       = solution;
+    history_times.back() = time;
   }
 
   void
@@ -39,54 +37,46 @@ namespace lithostress
                              TrilinosWrappers::MPI::Vector &guess) const
   {
     Assert(available(), ExcInternalError());
-    guess = last;
-    if (n_recorded == 1 || !(last_time > before_time))
+    const std::size_t n = history.size();
+    guess               = history[n - 1];
+    if (n == 1 || !(history_times[n - 1] > history_times[n - 2]))
       return;
-    const double ratio = (time - last_time) / (last_time - before_time);
+    const double t2 = history_times[n - 1], t1 = history_times[n - 2];
+    const double ratio = (time - t2) / (t2 - t1);
     // Through the last three solutions where the steps run forward at
     // comparable lengths: the error is then of the order of the steps'
     // third difference.
-    if (n_recorded == 3 && before_time > earliest_time && ratio > 0 &&
-        ratio <= 4)
+    if (n == 3 && t1 > history_times[0] && ratio > 0 && ratio <= 4)
       {
-        const double t0 = earliest_time, t1 = before_time, t2 = last_time;
+        const double t0       = history_times[0];
         const double previous = (t2 - t1) / (t1 - t0);
         if (previous >= 0.25 && previous <= 4)
           {
             guess *= (time - t0) * (time - t1) / ((t2 - t0) * (t2 - t1));
             guess.add((time - t0) * (time - t2) / ((t1 - t0) * (t1 - t2)),
-                      before,
+                      history[1],
                       (time - t1) * (time - t2) / ((t0 - t1) * (t0 - t2)),
-                      earliest);
+                      history[0]);
             return;
           }
       }
     const double clamped = std::clamp(ratio, -1., 4.);
-    guess.sadd(1. + clamped, -clamped, before);
+    guess.sadd(1. + clamped, -clamped, history[n - 2]);
   }
 
   std::vector<double>
   SolutionPredictor::times() const
   {
-    if (n_recorded == 3)
-      return {earliest_time, before_time, last_time};
-    if (n_recorded == 2)
-      return {before_time, last_time};
-    if (n_recorded == 1)
-      return {last_time};
-    return {};
+    return history_times;
   }
 
   std::vector<const TrilinosWrappers::MPI::Vector *>
   SolutionPredictor::solutions() const
   {
-    if (n_recorded == 3)
-      return {&earliest, &before, &last};
-    if (n_recorded == 2)
-      return {&before, &last};
-    if (n_recorded == 1)
-      return {&last};
-    return {};
+    std::vector<const TrilinosWrappers::MPI::Vector *> result;
+    for (const auto &solution : history)
+      result.push_back(&solution);
+    return result;
   }
 
   void

@@ -45,7 +45,7 @@ namespace lithostress
     bool
     available() const
     {
-      return n_recorded > 0;
+      return !history.empty();
     }
 
     /** The guess at @p time into @p guess (sized here; owned entries);
@@ -70,11 +70,10 @@ namespace lithostress
             const std::vector<TrilinosWrappers::MPI::Vector> &solutions);
 
   private:
-    /** The last solution (u₂ at t₂), the one before (u₁ at t₁) and the one
-     * before that (u₀ at t₀). */
-    TrilinosWrappers::MPI::Vector last, before, earliest;
-    double       last_time = 0, before_time = 0, earliest_time = 0;
-    unsigned int n_recorded = 0;
+    /** The last solutions, oldest first (u₀, u₁, u₂: at most three), and
+     * their times t₀ < t₁ < t₂. */
+    std::vector<TrilinosWrappers::MPI::Vector> history;
+    std::vector<double>                        history_times;
   };
 } // namespace lithostress
 
