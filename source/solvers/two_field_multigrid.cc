@@ -9,9 +9,8 @@
 #include <deal.II/lac/vector.h>
 
 #include <lithostress/base/input_error.h>
+#include <lithostress/solvers/galerkin_product.h>
 #include <lithostress/solvers/two_field_multigrid.h>
-
-#include <EpetraExt_MatrixMatrix.h>
 
 #include <algorithm>
 #include <array>
@@ -217,77 +216,6 @@ namespace lithostress
       return fields;
     }
   } // namespace
-
-  template <int dim>
-  void
-  TwoFieldMultigrid<dim>::galerkin_product(const Matrix   &a,
-                                           const Matrix   &p,
-                                           const IndexSet &coarse_owned,
-                                           Matrix         &result)
-  {
-    const MPI_Comm communicator = a.get_mpi_communicator();
-    if (Utilities::MPI::n_mpi_processes(communicator) == 1)
-      {
-        // deal.II's products (ML's): 3.7 times faster than EpetraExt's
-        // here (thrust fault, 416 k DoFs: 5.8 s of set-ups against 21 s).
-        Matrix ap;
-        a.mmult(ap, p);
-        p.Tmmult(result, ap);
-        return;
-      }
-    // On several ranks EpetraExt's products, copied into a pattern of our
-    // own: deal.II's Tmmult (ML's) wrote past an allocation there (the
-    // subduction coupling's third goal-oriented mesh on 2 ranks;
-    // valgrind), and so did copying a product's graph
-    // (SparseMatrix::reinit(Epetra_CrsMatrix)). ML's own triple product
-    // (ML_Epetra_PtAP) numbers the columns of these products differently
-    // from the coarse level's DoFs: its entries were wrong.
-    const Epetra_CrsMatrix &ae = a.trilinos_matrix();
-    const Epetra_CrsMatrix &pe = p.trilinos_matrix();
-    Epetra_CrsMatrix        ap(Copy, ae.RowMap(), 0);
-    int error = EpetraExt::MatrixMatrix::Multiply(ae, false, pe, false, ap);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    Epetra_CrsMatrix ptap(Copy, pe.DomainMap(), 0);
-    error = EpetraExt::MatrixMatrix::Multiply(pe, true, ap, false, ptap);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    const Epetra_Map &rows = ptap.RowMap();
-    const Epetra_Map &cols = ptap.ColMap();
-    // Every row's diagonal, which a DoF no coarse function reaches lacks
-    // (the lengths indexed by the global row, as deal.II reads them).
-    std::vector<types::global_dof_index> lengths(coarse_owned.size(), 0);
-    for (int i = 0; i < rows.NumMyElements(); ++i)
-      lengths[rows.GID(i)] = ptap.NumMyEntries(i) + 1;
-    TrilinosWrappers::SparsityPattern pattern;
-    pattern.reinit(coarse_owned, coarse_owned, communicator, lengths);
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  values;
-    const auto                           row = [&](const int i) {
-      int     n = 0;
-      double *v = nullptr;
-      int    *c = nullptr;
-      ptap.ExtractMyRowView(i, n, v, c);
-      columns.assign(1, rows.GID(i));
-      values.assign(1, 0.);
-      for (int e = 0; e < n; ++e)
-        {
-          columns.push_back(cols.GID(c[e]));
-          values.push_back(v[e]);
-        }
-    };
-    for (int i = 0; i < rows.NumMyElements(); ++i)
-      {
-        row(i);
-        pattern.add_entries(rows.GID(i), columns.begin(), columns.end());
-      }
-    pattern.compress();
-    result.reinit(pattern);
-    for (int i = 0; i < rows.NumMyElements(); ++i)
-      {
-        row(i);
-        result.add(rows.GID(i), columns, values, false);
-      }
-    result.compress(VectorOperation::add);
-  }
 
   template <int dim>
   typename TwoFieldMultigrid<dim>::Nodes

@@ -155,14 +155,6 @@ namespace lithostress
                       const Transfers                 &rows,
                       const AffineConstraints<double> &fine_constraints);
 
-    /** @p result := @p pᵀ @p a @p p (the Galerkin coarse operator), whose
-     * rows this rank owns are @p coarse_owned. */
-    static void
-    galerkin_product(const Matrix   &a,
-                     const Matrix   &p,
-                     const IndexSet &coarse_owned,
-                     Matrix         &result);
-
     /** The DoFs this rank owns on @p level grouped by support point. */
     Nodes
     group_nodes(const unsigned int level) const;
