@@ -438,8 +438,9 @@ namespace lithostress
     const DoFHandler<dim>           &coarse         = *level_dofs[level - 1];
     const AffineConstraints<double> &coarse_hanging = hanging_nodes[level - 1];
     const IndexSet                  &mine           = owned[level];
-    Transfers                        rows(mine.n_elements());
-    std::vector<bool>                done(mine.n_elements(), false);
+    std::vector<std::vector<std::pair<types::global_dof_index, double>>> rows(
+      mine.n_elements());
+    std::vector<bool>                    done(mine.n_elements(), false);
     std::vector<types::global_dof_index> fine_indices, coarse_indices;
     for_each_cell_pair(
       coarse,
@@ -483,7 +484,24 @@ namespace lithostress
               }
           }
       });
-    return rows;
+    Transfers   compact;
+    std::size_t n_entries = 0;
+    for (const auto &row : rows)
+      n_entries += row.size();
+    compact.offsets.reserve(rows.size() + 1);
+    compact.coarse.reserve(n_entries);
+    compact.weights.reserve(n_entries);
+    for (auto &row : rows)
+      {
+        for (const auto &[j, w] : row)
+          {
+            compact.coarse.push_back(j);
+            compact.weights.push_back(w);
+          }
+        compact.offsets.push_back(compact.coarse.size());
+        row = {};
+      }
+    return compact;
   }
 
   template <int dim>
@@ -499,17 +517,21 @@ namespace lithostress
     const auto kept = [&](const types::global_dof_index i) {
       return !fine_constraints.is_constrained(i);
     };
+    const auto entries = [&](const types::global_dof_index i) {
+      const auto r = fine.index_within_set(i);
+      return std::make_pair(rows.offsets[r], rows.offsets[r + 1]);
+    };
     for (const auto i : fine)
       if (kept(i))
-        for (const auto &[j, w] : rows[fine.index_within_set(i)])
-          pattern.add(i, j);
+        for (auto [e, end] = entries(i); e < end; ++e)
+          pattern.add(i, rows.coarse[e]);
     pattern.compress();
     auto matrix = std::make_unique<Matrix>();
     matrix->reinit(pattern);
     for (const auto i : fine)
       if (kept(i))
-        for (const auto &[j, w] : rows[fine.index_within_set(i)])
-          matrix->add(i, j, w);
+        for (auto [e, end] = entries(i); e < end; ++e)
+          matrix->add(i, rows.coarse[e], rows.weights[e]);
     matrix->compress(VectorOperation::add);
     prolongations[level] = std::move(matrix);
   }
@@ -689,8 +711,9 @@ namespace lithostress
     for (const auto &m : level_matrices)
       if (m)
         bytes += m->memory_consumption();
-    for (const auto &row : finest_rows)
-      bytes += row.capacity() * sizeof(row[0]) + sizeof(row);
+    bytes += finest_rows.offsets.capacity() * sizeof(std::size_t) +
+             finest_rows.coarse.capacity() * sizeof(types::global_dof_index) +
+             finest_rows.weights.capacity() * sizeof(double);
     return bytes;
   }
 
