@@ -2,8 +2,8 @@
 #include <deal.II/hp/fe_values.h>
 #include <deal.II/lac/trilinos_index_access.h>
 
-#include <lithostress/base/input_error.h>
 #include <lithostress/assembly/elastic_assembler.h>
+#include <lithostress/base/input_error.h>
 
 #include <Epetra_CrsMatrix.h>
 
@@ -178,6 +178,70 @@ namespace lithostress
 
   template <int dim>
   void
+  ElasticAssembler<dim>::add_cell_terms(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const FEValues<dim>                                  &fe_values,
+    hp::FEFaceValues<dim>                                &hp_face_values,
+    const bool                                            with_stiffness,
+    FullMatrix<double>                                   &cell_matrix,
+    Vector<double>                                       &cell_rhs) const
+  {
+    const unsigned int               n = fe_values.dofs_per_cell;
+    const FEValuesExtractors::Vector u =
+      fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+    const Material &material = stress_model.materials(cell->material_id());
+    const ElasticModuli<dim> &moduli = stress_model.step_moduli(material.id);
+    cell_matrix.reinit(n, n);
+    cell_rhs.reinit(n);
+    if (with_stiffness)
+      add_cell_stiffness(fe_values, moduli, cell_matrix);
+    for (const auto &load : loads.loads())
+      add_load_terms(*load,
+                     cell,
+                     fe_values,
+                     hp_face_values,
+                     u,
+                     material,
+                     moduli,
+                     cell_matrix,
+                     cell_rhs);
+  }
+
+  template <int dim>
+  void
+  ElasticAssembler<dim>::add_cell_matrices(
+    const DoFHandler<dim>           &dof_handler,
+    const CellSelection             &selected,
+    const AffineConstraints<double> &constraints,
+    const double                     factor,
+    TrilinosWrappers::SparseMatrix  &matrix) const
+  {
+    hp::FEValues<dim>                    hp_fe_values   = cell_values(fe_space);
+    hp::FEFaceValues<dim>                hp_face_values = face_values(fe_space);
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_rhs;
+    std::vector<types::global_dof_index> dofs;
+    on_all_ranks(dof_handler.get_communicator(), [&]() {
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && selected(cell))
+          {
+            hp_fe_values.reinit(cell);
+            add_cell_terms(cell,
+                           hp_fe_values.get_present_fe_values(),
+                           hp_face_values,
+                           true,
+                           cell_matrix,
+                           cell_rhs);
+            cell_matrix *= factor;
+            dofs.resize(cell_matrix.m());
+            cell->get_dof_indices(dofs);
+            constraints.distribute_local_to_global(cell_matrix, dofs, matrix);
+          }
+    });
+  }
+
+  template <int dim>
+  void
   ElasticAssembler<dim>::assemble(const DoFHandler<dim> &dof_handler,
                                   LinearSystem<dim>     &system,
                                   const bool             with_matrix) const
@@ -205,16 +269,11 @@ namespace lithostress
             hp_fe_values.reinit(cell);
             const FEValues<dim> &fe_values =
               hp_fe_values.get_present_fe_values();
-            const unsigned int               n = fe_values.dofs_per_cell;
-            const FEValuesExtractors::Vector u =
-              fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
-            const Material &material =
+            const unsigned int n = fe_values.dofs_per_cell;
+            const Material    &material =
               stress_model.materials(cell->material_id());
             const ElasticModuli<dim> &moduli =
               stress_model.step_moduli(material.id);
-
-            cell_matrix.reinit(n, n);
-            cell_rhs.reinit(n);
             dofs.resize(n);
             cell->get_dof_indices(dofs);
 
@@ -229,26 +288,24 @@ namespace lithostress
                     inhomogeneous = true;
                     break;
                   }
-
-            if (with_matrix || inhomogeneous)
-              add_cell_stiffness(fe_values, moduli, cell_matrix);
-            for (const auto &load : loads.loads())
-              add_load_terms(*load,
-                             cell,
-                             fe_values,
-                             hp_face_values,
-                             u,
-                             material,
-                             moduli,
-                             cell_matrix,
-                             cell_rhs);
+            add_cell_terms(cell,
+                           fe_values,
+                           hp_face_values,
+                           with_matrix || inhomogeneous,
+                           cell_matrix,
+                           cell_rhs);
 
             if (history_strain != nullptr &&
                 stress_model.maxwell(material.id).is_viscous())
               {
                 history_strain->get(cell, history_values);
-                add_initial_strain_terms(
-                  fe_values, u, moduli, history_values, cell_rhs);
+                add_initial_strain_terms(fe_values,
+                                         fe_space.displacement(
+                                           fe_space.field_of(
+                                             cell->active_fe_index())),
+                                         moduli,
+                                         history_values,
+                                         cell_rhs);
               }
 
             if (with_matrix && direct->applies(dofs))

@@ -10,6 +10,7 @@
 #include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/faults/fault_element_stresses.h>
+#include <lithostress/faults/fault_strip_stiffness.h>
 #include <lithostress/faults/friction_limit_coupling.h>
 #include <lithostress/faults/frictional_sliding_solver.h>
 #include <lithostress/faults/normal_contact.h>
@@ -306,6 +307,10 @@ namespace lithostress
     /** The linearised system: its matrix, right-hand side and (exact
      * contact) constraints. */
     LinearSystem<dim> linearised;
+    /** Exact contact: the model's stiffness from the linearised matrix and
+     * the strip of cells along the faults (the model's own matrix is not
+     * assembled), made with it. */
+    FaultStripStiffness<dim> strip;
     /** The interface tangent per point in the matrix: a set-up adds
      * only the change, onto the bulk assembled (and its constraints
      * made) once per set of active constraints. */
@@ -464,6 +469,12 @@ namespace lithostress
        * with the tie's weights, and the tied row zeroed). */
       void
       condense_ties(TrilinosWrappers::MPI::Vector &r) const;
+
+      /** Assemble the linearised matrix without interface tangent for
+       * the current active constraints (exact contact: with the strip
+       * that gives the model's stiffness), and its bulk right-hand side. */
+      void
+      assemble_operator();
 
       /** The system of the law @p law linearised at u_ghost (the bulk
        * matrix with ∫[v]·D[u], the right-hand side less the affine part),
@@ -937,7 +948,9 @@ namespace lithostress
       const TrilinosWrappers::MPI::Vector &owned)
     {
       u_ghost = owned;
-      system.matrix.vmult(residual, owned);
+      if (!assembled)
+        assemble_operator();
+      kept.strip.vmult(residual, matrix, owned);
       residual -= system.rhs;
       add_interface_forces(false);
       force += residual;
@@ -995,6 +1008,41 @@ namespace lithostress
 
     template <int dim>
     void
+    SlidingContext<dim>::assemble_operator()
+    {
+      if (contact)
+        {
+          // The old preconditioner refers to the matrix about to be
+          // made again: freed first, which also lowers the peak memory.
+          if (!cholesky)
+            {
+              factorization.reset();
+              amg.clear();
+            }
+          contact->assemble_bulk(problem, linearised);
+          kept.strip.reinit(problem, faults, linearised.constraints);
+          assembled_version = contact->open_set_version();
+        }
+      else
+        {
+          matrix.copy_from(system.matrix);
+          rhs = system.rhs;
+        }
+      bulk_rhs           = rhs;
+      bulk_rhs_assembled = true;
+      // The matrix was made again (with the sparsity of the new
+      // constraints): the AMG and Amesos refer to the old one; a
+      // Cholesky factor is the preconditioner's own.
+      if (!cholesky)
+        preconditioner_current = false;
+      std::fill(assembled_tangents.begin(),
+                assembled_tangents.end(),
+                Tensor<2, dim>());
+      assembled = true;
+    }
+
+    template <int dim>
+    void
     SlidingContext<dim>::set_up(const Law &law)
     {
       Timer      timer;
@@ -1002,36 +1050,7 @@ namespace lithostress
         !assembled ||
         (contact && contact->open_set_version() != assembled_version);
       if (fresh)
-        {
-          if (contact)
-            {
-              // The old preconditioner refers to the matrix about to be
-              // made again: freed first, which also lowers the peak memory.
-              if (!cholesky)
-                {
-                  factorization.reset();
-                  amg.clear();
-                }
-              contact->assemble_bulk(problem, linearised);
-              assembled_version = contact->open_set_version();
-            }
-          else
-            {
-              matrix.copy_from(system.matrix);
-              rhs = system.rhs;
-            }
-          bulk_rhs           = rhs;
-          bulk_rhs_assembled = true;
-          // The matrix was made again (with the sparsity of the new
-          // constraints): the AMG and Amesos refer to the old one; a
-          // Cholesky factor is the preconditioner's own.
-          if (!cholesky)
-            preconditioner_current = false;
-          std::fill(assembled_tangents.begin(),
-                    assembled_tangents.end(),
-                    Tensor<2, dim>());
-          assembled = true;
-        }
+        assemble_operator();
       else if (!bulk_rhs_assembled)
         {
           // A new solve on the kept operator: only its right-hand side.
@@ -1061,6 +1080,10 @@ namespace lithostress
           active_constraints().distribute_local_to_global(change.matrix,
                                                           values.dofs,
                                                           matrix);
+          if (contact)
+            kept.strip.add_interface_tangent(change.matrix,
+                                             values.dofs,
+                                             active_constraints());
           active_constraints().distribute_local_to_global(terms.rhs,
                                                           values.dofs,
                                                           rhs,
@@ -1069,6 +1092,8 @@ namespace lithostress
           change.clear();
         });
       matrix.compress(VectorOperation::add);
+      if (contact)
+        kept.strip.compress();
       rhs.compress(VectorOperation::add);
       time_assembly += timer.wall_time();
       // A kept preconditioner (the factorisation, or the multigrid's
@@ -1150,7 +1175,7 @@ namespace lithostress
                       fe_space,
                       *contact,
                       responses,
-                      system.matrix,
+                      kept.strip.model_rows(),
                       linearised.constraints,
                       system.locally_owned,
                       system.locally_relevant);

@@ -60,8 +60,8 @@ namespace lithostress
     phase_done("constraints");
     system.reinit(dofs,
                   comm,
-                  solver->needs_matrix(),
-                  model.faults.has_face_terms() && solver->needs_matrix()
+                  needs_model_matrix(),
+                  model.faults.has_face_terms() && needs_model_matrix()
                     ? model.faults.interface_cliques(dofs)
                     : std::vector<std::vector<types::global_dof_index>>());
     ++mesh_version;
@@ -163,7 +163,7 @@ namespace lithostress
     // The matrix only where the operator changed (the time loop assembles
     // many right-hand sides for one operator).
     const bool with_matrix =
-      solver->needs_matrix() && matrix_version != operator_version();
+      needs_model_matrix() && matrix_version != operator_version();
     assembler.assemble(dofs, system, with_matrix);
     model.faults.assemble(dofs,
                           model.fe_space,

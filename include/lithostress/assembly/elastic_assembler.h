@@ -1,6 +1,8 @@
 #ifndef lithostress_assembly_elastic_assembler_h
 #define lithostress_assembly_elastic_assembler_h
 
+#include <functional>
+
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/hp/fe_values.h>
 
@@ -45,6 +47,24 @@ namespace lithostress
     assemble(const DoFHandler<dim> &dof_handler,
              LinearSystem<dim>     &system,
              const bool             with_matrix = true) const;
+
+    /** The locally owned cells @p selected chooses. */
+    using CellSelection = std::function<bool(
+      const typename DoFHandler<dim>::active_cell_iterator &)>;
+
+    /**
+     * Add @p factor times the cell matrices assemble() makes (stiffness and
+     * the loads' terms) of the locally owned cells @p selected chooses,
+     * through @p constraints, to @p matrix (neither zeroed nor compressed):
+     * the same operator on a part of the mesh with other constraints (the
+     * sliding solver's strip along the faults, FaultStripStiffness).
+     */
+    void
+    add_cell_matrices(const DoFHandler<dim>           &dof_handler,
+                      const CellSelection             &selected,
+                      const AffineConstraints<double> &constraints,
+                      const double                     factor,
+                      TrilinosWrappers::SparseMatrix  &matrix) const;
 
     /** Add the cell stiffness ∫ ε(φ_i) : C ε(φ_j) dx to @p cell_matrix. */
     static void
@@ -97,6 +117,17 @@ namespace lithostress
     face_values(const FiniteElementSpace<dim> &fe_space);
 
   private:
+    /** The stiffness (if @p with_stiffness) and the loads' terms of
+     * @p cell, whose values @p hp_fe_values holds, into @p cell_matrix and
+     * @p cell_rhs (sized here). */
+    void
+    add_cell_terms(const typename DoFHandler<dim>::active_cell_iterator &cell,
+                   const FEValues<dim>   &fe_values,
+                   hp::FEFaceValues<dim> &hp_face_values,
+                   const bool             with_stiffness,
+                   FullMatrix<double>    &cell_matrix,
+                   Vector<double>        &cell_rhs) const;
+
     const FiniteElementSpace<dim> &fe_space;
     const StressModel<dim>        &stress_model;
     const LoadCollection<dim>     &loads;

@@ -214,6 +214,16 @@ namespace lithostress
                   const bool                     commit,
                   const std::function<void()>   &on_failure);
 
+    /** Whether the model's matrix is assembled: the solver asks for it,
+     * unless the faults are in exact contact, whose sliding solve makes
+     * its own linearised matrix and reads the model's stiffness from it
+     * and the strip along the faults (FaultStripStiffness). */
+    bool
+    needs_model_matrix() const
+    {
+      return solver->needs_matrix() && !model.faults.contact();
+    }
+
     /** The version of the operator: mesh and step moduli. */
     unsigned long long
     operator_version() const
