@@ -276,11 +276,18 @@ namespace lithostress
   galerkin_product(const TrilinosWrappers::SparseMatrix &a,
                    const TrilinosWrappers::SparseMatrix &p,
                    const IndexSet                       &coarse_owned,
-                   TrilinosWrappers::SparseMatrix       &result)
+                   TrilinosWrappers::SparseMatrix       &result,
+                   const bool                            without_ap)
   {
-    if (Utilities::MPI::n_mpi_processes(a.get_mpi_communicator()) == 1)
+    if (Utilities::MPI::n_mpi_processes(a.get_mpi_communicator()) > 1)
+      product_by_epetra_ext(a, p, coarse_owned, result);
+    else if (without_ap)
       product_by_rows(a, p, coarse_owned, result);
     else
-      product_by_epetra_ext(a, p, coarse_owned, result);
+      {
+        Matrix ap;
+        a.mmult(ap, p);
+        p.Tmmult(result, ap);
+      }
   }
 } // namespace lithostress

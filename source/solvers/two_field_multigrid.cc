@@ -575,7 +575,8 @@ namespace lithostress
         galerkin_product(fine,
                          *prolongations[level],
                          owned[level - 1],
-                         *level_matrices[level - 1]);
+                         *level_matrices[level - 1],
+                         level == finest);
       }
     const auto level_matrix = [&](const unsigned int level) -> const Matrix & {
       return level == finest ? matrix : *level_matrices[level];

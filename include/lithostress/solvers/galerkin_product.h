@@ -14,21 +14,24 @@ namespace lithostress
    * owns are @p coarse_owned. Every row holds its diagonal, also a row no
    * coarse function reaches (then 0).
    *
-   * On one rank the product is formed row by row of the result: for coarse
-   * DoF i it sums p_ki a_kj p_jl over the fine DoFs k that coarse function
-   * i reaches, in a dense accumulator over the coarse DoFs, once for the
-   * row lengths, once for the pattern and once for the values. The
+   * On one rank with @p without_ap the product is formed row by row of
+   * the result: for coarse DoF i it sums p_ki a_kj p_jl over the fine DoFs
+   * k that coarse function i reaches, in a dense accumulator over the
+   * coarse DoFs, once for the pattern and once for the values. The
    * product a·p is never held: on the finest level of the plane thrust
    * (416 k DoFs) it took 137 MB, nearly as much as a itself (158 MB), and
-   * set the peak memory of every multigrid set-up. On several ranks the
-   * fine rows of a coarse function lie on other ranks; EpetraExt's two
-   * products are used there.
+   * set the peak memory of every multigrid set-up. It takes 1.2 times as
+   * long as ML's two products on that level and 2.4 times on the coarser
+   * ones, where a·p is small: there (@p without_ap false) ML's products
+   * through deal.II. On several ranks the fine rows of a coarse function
+   * lie on other ranks; EpetraExt's two products are used there.
    */
   void
   galerkin_product(const TrilinosWrappers::SparseMatrix &a,
                    const TrilinosWrappers::SparseMatrix &p,
                    const IndexSet                       &coarse_owned,
-                   TrilinosWrappers::SparseMatrix       &result);
+                   TrilinosWrappers::SparseMatrix       &result,
+                   const bool                            without_ap = true);
 } // namespace lithostress
 
 #endif
