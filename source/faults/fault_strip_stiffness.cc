@@ -70,7 +70,7 @@ namespace lithostress
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0 &&
             in_strip(cell))
-          sparsity.add_clique(dofs);
+          sparsity.add_clique(dofs); // (in_strip() read the cell's DoFs)
       if (with_interface)
         for (const auto &clique : faults.interface_cliques(dof_handler))
           sparsity.add_clique(clique);

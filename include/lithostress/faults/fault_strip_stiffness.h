@@ -38,7 +38,7 @@ namespace lithostress
   {
   public:
     /**
-     * S_G through the problem's constraints and −L_G through @p ties (the
+     * S_G through the problem's constraints and L_G through @p ties (the
      * problem's constraints and the contact's), made when L is made with
      * @p ties and no interface tangent yet.
      */

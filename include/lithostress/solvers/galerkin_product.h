@@ -11,8 +11,9 @@ namespace lithostress
   /**
    * @p result := @p pᵀ @p a @p p, the Galerkin coarse operator of a
    * geometric multigrid level (TwoFieldMultigrid), whose rows this rank
-   * owns are @p coarse_owned. Every row holds its diagonal, also a row no
-   * coarse function reaches (then 0).
+   * owns are @p coarse_owned. Formed row by row or by EpetraExt (below),
+   * every row holds its diagonal, also a row no coarse function reaches
+   * (then 0).
    *
    * On one rank with @p without_ap the product is formed row by row of
    * the result: for coarse DoF i it sums p_ki a_kj p_jl over the fine DoFs
