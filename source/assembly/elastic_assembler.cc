@@ -213,7 +213,6 @@ namespace lithostress
     const DoFHandler<dim>           &dof_handler,
     const CellSelection             &selected,
     const AffineConstraints<double> &constraints,
-    const double                     factor,
     TrilinosWrappers::SparseMatrix  &matrix) const
   {
     hp::FEValues<dim>                    hp_fe_values   = cell_values(fe_space);
@@ -232,7 +231,6 @@ namespace lithostress
                            true,
                            cell_matrix,
                            cell_rhs);
-            cell_matrix *= factor;
             dofs.resize(cell_matrix.m());
             cell->get_dof_indices(dofs);
             constraints.distribute_local_to_global(cell_matrix, dofs, matrix);

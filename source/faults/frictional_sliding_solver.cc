@@ -948,6 +948,8 @@ namespace lithostress
       const TrilinosWrappers::MPI::Vector &owned)
     {
       u_ghost = owned;
+      // (The model's stiffness is read from the linearised matrix: the
+      // first residual of a solve comes before its first set-up.)
       if (!assembled)
         assemble_operator();
       kept.strip.vmult(residual, matrix, owned);

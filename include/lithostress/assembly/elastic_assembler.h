@@ -53,9 +53,9 @@ namespace lithostress
       const typename DoFHandler<dim>::active_cell_iterator &)>;
 
     /**
-     * Add @p factor times the cell matrices assemble() makes (stiffness and
-     * the loads' terms) of the locally owned cells @p selected chooses,
-     * through @p constraints, to @p matrix (neither zeroed nor compressed):
+     * Add the cell matrices assemble() makes (stiffness and the loads'
+     * terms) of the locally owned cells @p selected chooses, through
+     * @p constraints, to @p matrix (neither zeroed nor compressed):
      * the same operator on a part of the mesh with other constraints (the
      * sliding solver's strip along the faults, FaultStripStiffness).
      */
@@ -63,7 +63,6 @@ namespace lithostress
     add_cell_matrices(const DoFHandler<dim>           &dof_handler,
                       const CellSelection             &selected,
                       const AffineConstraints<double> &constraints,
-                      const double                     factor,
                       TrilinosWrappers::SparseMatrix  &matrix) const;
 
     /** Add the cell stiffness ∫ ε(φ_i) : C ε(φ_j) dx to @p cell_matrix. */

@@ -47,13 +47,6 @@ namespace lithostress
            const FaultInterface<dim>       &faults,
            const AffineConstraints<double> &ties);
 
-    /** Whether reinit() made the strip. */
-    bool
-    empty() const
-    {
-      return model_strip.m() == 0;
-    }
-
     /** Record that @p tangent (of the face pair with DoFs @p dofs) was
      * added to L through @p ties; compress() after the last one. */
     void

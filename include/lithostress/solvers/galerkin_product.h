@@ -21,11 +21,12 @@ namespace lithostress
    * coarse DoFs, once for the pattern and once for the values. The
    * product a·p is never held: on the finest level of the plane thrust
    * (416 k DoFs) it took 137 MB, nearly as much as a itself (158 MB), and
-   * set the peak memory of every multigrid set-up. It takes 1.2 times as
-   * long as ML's two products on that level and 2.4 times on the coarser
-   * ones, where a·p is small: there (@p without_ap false) ML's products
-   * through deal.II. On several ranks the fine rows of a coarse function
-   * lie on other ranks; EpetraExt's two products are used there.
+   * set the peak memory of every multigrid set-up. It is slower than
+   * ML's two products (a set-up of that thrust 4.3 s against 3.9 s), and
+   * 2.4 times slower on the coarser levels, where a·p is small: there
+   * (@p without_ap false) ML's products through deal.II. On several ranks the
+   * fine rows of a coarse function lie on other ranks; EpetraExt's two products
+   * are used there.
    */
   void
   galerkin_product(const TrilinosWrappers::SparseMatrix &a,
