@@ -61,7 +61,6 @@ namespace lithostress
     product.reinit(locally_owned, communicator);
     product = 0;
     ghosted.reinit(locally_owned, locally_relevant, communicator);
-    force.reinit(locally_owned, communicator);
   }
 
   template <int dim>
@@ -128,6 +127,7 @@ namespace lithostress
     // The change of the reactions for the direction src: Λ C src (the
     // rows' columns are locally relevant).
     ghosted = src;
+    product = 0;
     for (const Row &row : reaction_rows)
       {
         double value = 0;
@@ -138,17 +138,18 @@ namespace lithostress
     product.compress(VectorOperation::insert);
     ghosted = product;
     // The sliding points' shear forces for it, onto the ties' masters
-    // (Cᵀ, with the problem's constraints).
-    force = 0;
+    // (Cᵀ, with the problem's constraints), summed in `product`, whose
+    // reactions `ghosted` now holds.
+    product = 0;
     Vector<double> local;
     for (const Column &column : columns)
       {
         local = column.force;
         local *= contact->reaction(ghosted, column.point);
-        ties->distribute_local_to_global(local, column.dofs, force);
+        ties->distribute_local_to_global(local, column.dofs, product);
       }
-    force.compress(VectorOperation::add);
-    dst += force;
+    product.compress(VectorOperation::add);
+    dst += product;
   }
 
   template class FrictionLimitCoupling<2>;

@@ -418,11 +418,17 @@ namespace lithostress
         level_dofs[level]   = dofs.get();
         coarser_dofs[level] = std::move(dofs);
       }
-    // The smoothers point into the nodes: made again by initialize().
+    // The smoothers and zones point into the nodes: made again by
+    // initialize().
     smoothers.clear();
+    zones.clear();
     nodes.assign(n, Nodes());
+    zone_seeds.assign(n, {});
     for (unsigned int level = 1; level < n; ++level)
-      nodes[level] = group_nodes(level);
+      {
+        nodes[level]      = group_nodes(level);
+        zone_seeds[level] = fault_dofs(level);
+      }
     prolongations.clear();
     prolongations.resize(n);
     for (unsigned int level = 1; level + 1 < n; ++level)
@@ -583,6 +589,7 @@ namespace lithostress
     };
 
     smoothers.resize(n);
+    zones.resize(n);
     residuals.resize(n);
     corrections.resize(n);
     coarse_rhs.resize(n);
@@ -606,6 +613,7 @@ namespace lithostress
           std::make_shared<NodalBlockInverse>(block_inverse(level, a));
         smoothers[level] = std::make_unique<Smoother>();
         smoothers[level]->initialize(a, data);
+        zones[level] = fault_zone(level, a, settings.fault_zone_layers);
       }
 
     // The coarsest operator, gathered on every rank and factorised there.
@@ -656,6 +664,75 @@ namespace lithostress
   }
 
   template <int dim>
+  std::vector<unsigned int>
+  TwoFieldMultigrid<dim>::fault_dofs(const unsigned int level) const
+  {
+    const DoFHandler<dim> &dofs    = *level_dofs[level];
+    const IndexSet        &mine    = owned[level];
+    const bool             coarser = level + 1 < n_levels();
+    // Whether a neighbour across face f carries the other field (on a
+    // refined neighbour: any of its children on that face).
+    const auto other_field = [](const auto &cell, const unsigned int f) {
+      if (cell->at_boundary(f))
+        return false;
+      const auto neighbour = cell->neighbor(f);
+      if (!neighbour->has_children())
+        return neighbour->active_fe_index() != cell->active_fe_index();
+      for (unsigned int c = 0; c < cell->face(f)->n_children(); ++c)
+        if (cell->neighbor_child_on_subface(f, c)->active_fe_index() !=
+            cell->active_fe_index())
+          return true;
+      return false;
+    };
+    std::vector<char>                    seed(mine.n_elements(), 0);
+    std::vector<types::global_dof_index> indices;
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        if ((!coarser && !cell->is_locally_owned()) ||
+            cell->get_fe().n_dofs_per_cell() == 0)
+          continue;
+        for (const unsigned int f : cell->face_indices())
+          if (other_field(cell, f))
+            {
+              indices.resize(cell->get_fe().n_dofs_per_face(f));
+              cell->face(f)->get_dof_indices(indices, cell->active_fe_index());
+              for (const auto i : indices)
+                if (mine.is_element(i))
+                  seed[mine.index_within_set(i)] = 1;
+            }
+      }
+    // And the DoFs of every node that carries both fields.
+    const Nodes &level_nodes = nodes[level];
+    for (std::size_t k = 0; k + 1 < level_nodes.offsets.size(); ++k)
+      if (level_nodes.offsets[k + 1] - level_nodes.offsets[k] > dim)
+        for (auto j = level_nodes.offsets[k]; j < level_nodes.offsets[k + 1];
+             ++j)
+          seed[level_nodes.dofs[j]] = 1;
+    std::vector<unsigned int> rows;
+    for (unsigned int r = 0; r < seed.size(); ++r)
+      if (seed[r])
+        rows.push_back(r);
+    return rows;
+  }
+
+  template <int dim>
+  std::unique_ptr<FaultZoneCorrection>
+  TwoFieldMultigrid<dim>::fault_zone(const unsigned int level,
+                                     const Matrix      &a,
+                                     const unsigned int layers) const
+  {
+    if (layers == 0)
+      return nullptr;
+    const std::vector<unsigned int> &seeds = zone_seeds[level];
+    // (Made by all ranks or none: it is collective.)
+    if (!Utilities::MPI::logical_or(!seeds.empty(), a.get_mpi_communicator()))
+      return nullptr;
+    auto zone = std::make_unique<FaultZoneCorrection>();
+    zone->initialize(a, seeds, layers);
+    return zone;
+  }
+
+  template <int dim>
   void
   TwoFieldMultigrid<dim>::v_cycle(const unsigned int level,
                                   Vector            &x,
@@ -683,11 +760,15 @@ namespace lithostress
     const Matrix &a =
       level + 1 == n_levels() ? *finest_matrix : *level_matrices[level];
     smoothers[level]->vmult(x, b);
+    if (zones[level])
+      zones[level]->correct(x, b);
     a.vmult(residuals[level], x);
     residuals[level].sadd(-1., 1., b);
     prolongations[level]->Tvmult(coarse_rhs[level - 1], residuals[level]);
     v_cycle(level - 1, corrections[level - 1], coarse_rhs[level - 1]);
     prolongations[level]->vmult_add(x, corrections[level - 1]);
+    if (zones[level])
+      zones[level]->correct(x, b);
     smoothers[level]->step(x, b);
   }
 
@@ -712,6 +793,9 @@ namespace lithostress
     for (const auto &m : level_matrices)
       if (m)
         bytes += m->memory_consumption();
+    for (const auto &zone : zones)
+      if (zone)
+        bytes += zone->memory_consumption();
     bytes += finest_rows.offsets.capacity() * sizeof(std::size_t) +
              finest_rows.coarse.capacity() * sizeof(types::global_dof_index) +
              finest_rows.weights.capacity() * sizeof(double);

@@ -12,6 +12,9 @@ prm/thrust_fault.prm, prm/listric_thrust_fault.prm, exact normal contact,
   at each refinement level), with its default Chebyshev smoother of
   degree 4 and with degree 6 (`Multigrid smoother degree`), which must
   take no more iterations;
+* `multigrid` without its fault zone's exact solve (`Multigrid fault
+  zone layers = 0`: FaultZoneCorrection), which the default (6 layers)
+  must not need more iterations than;
 * `automatic` with `Multigrid limit = 0`: the multigrid first, handing
   over to the kept factorisation if its second solve takes more than 8
   iterations (asserted: it hands over exactly then, and says so);
@@ -71,6 +74,8 @@ def solve(model, solver, ranks):
     sets = ["Faults/Sliding solver/Linear solver=" + solver.split(",")[0]]
     if solver == "multigrid, degree 6":
         sets.append("Faults/Sliding solver/Multigrid smoother degree=6")
+    if solver == "multigrid, no fault zone":
+        sets.append("Faults/Sliding solver/Multigrid fault zone layers=0")
     if solver == "automatic, multigrid first":
         sets.append("Faults/Sliding solver/Multigrid limit=0")
     log = run(os.path.join(ROOT, "prm", model + ".prm"), out, ranks, QUIET + sets).stdout
@@ -109,6 +114,7 @@ for model in MODELS:
     reference = solve(model, "direct", 1)
     iterations = {}
     for solver, ranks in (("AMG", 1), ("multigrid", 1), ("multigrid, degree 6", 1),
+                          ("multigrid, no fault zone", 1),
                           ("automatic, multigrid first", 1), ("automatic", 2), ("AMG", 2)):
         fault, surface, summary = solve(model, solver, ranks)
         if solver == "automatic, multigrid first":
@@ -136,6 +142,10 @@ for model in MODELS:
           "%s: the multigrid with the smoother of degree 6 takes %d linear iterations, "
           "with degree 4 %d (a stronger smoother, no more iterations)"
           % (model, iterations["multigrid, degree 6", 1], iterations["multigrid", 1]))
+    check(iterations["multigrid", 1] <= iterations["multigrid, no fault zone", 1],
+          "%s: the multigrid takes %d linear iterations with its fault zone's exact "
+          "solve, %d without (no more with it)"
+          % (model, iterations["multigrid", 1], iterations["multigrid, no fault zone", 1]))
     check(abs(iterations["automatic", 2] / iterations["multigrid", 1] - 1) <= 0.3,
           "%s: the multigrid takes %d linear iterations on 2 ranks, %d on 1 (within 30 %%)"
           % (model, iterations["automatic", 2], iterations["multigrid", 1]))

@@ -124,8 +124,8 @@ namespace lithostress
     /** The rows of K C this rank owns at the nodes whose reactions the
      * columns read. */
     std::vector<Row> reaction_rows;
-    /** Work vectors: K C x (owned and ghosted) and the forces. */
-    mutable TrilinosWrappers::MPI::Vector product, ghosted, force;
+    /** Work vectors: K C x (owned, then the forces; and ghosted). */
+    mutable TrilinosWrappers::MPI::Vector product, ghosted;
 
     /** reaction_rows from @p bulk and the homogeneous @p ties. */
     void

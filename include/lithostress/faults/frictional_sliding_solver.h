@@ -116,6 +116,9 @@ namespace lithostress
       /** Degree of the two fields' multigrid's Chebyshev smoother
        * (`Multigrid smoother degree`). */
       unsigned int smoother_degree = 4;
+      /** Layers of its exact solve around the fault nodes
+       * (`Multigrid fault zone layers`; TwoFieldMultigrid). */
+      unsigned int fault_zone_layers = 6;
     };
 
     FrictionalSlidingSolver();

@@ -10,6 +10,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <lithostress/solvers/fault_zone_correction.h>
 #include <lithostress/solvers/sparse_cholesky.h>
 
 #include <memory>
@@ -43,6 +44,10 @@ namespace lithostress
    * function that breaks a tie is condensed into a boundary layer one
    * fine cell wide, so the coarser operators couple the two fields' DoFs
    * at a fault node stiffly, by a factor that doubles with every level.
+   * Around the faults each level adds an exact solve on a few layers of
+   * the matrix graph about the fault nodes, after the pre-smoothing and
+   * before the post-smoothing (FaultZoneCorrection): the errors along a
+   * sliding fault are neither smooth nor local to a node.
    * The coarsest mesh is solved by a sparse Cholesky factorisation where
    * its operator is symmetric (exact contact, the spring law, locked
    * faults), by UMFPACK where it is not (the Newton tangent with the
@@ -63,6 +68,10 @@ namespace lithostress
     {
       unsigned int smoother_degree = 4;
       double       smoothing_range = 20;
+      /** Layers of the matrix graph around each level's fault nodes
+       * solved exactly after the pre-smoothing and before the
+       * post-smoothing (FaultZoneCorrection); 0: none. */
+      unsigned int fault_zone_layers = 6;
     };
 
     /**
@@ -171,6 +180,21 @@ namespace lithostress
     NodalBlockInverse
     block_inverse(const unsigned int level, const Matrix &a) const;
 
+    /** The local rows of @p level on the faults: the DoFs on faces
+     * between cells of the two fields, and those of every node that
+     * carries both (on several ranks a fault node's two fields may be
+     * owned by two ranks, each seeing a node of one field). */
+    std::vector<unsigned int>
+    fault_dofs(const unsigned int level) const;
+
+    /** The correction on the zone of @p layers layers around the fault
+     * rows of @p level (zone_seeds), whose matrix is @p a; none without
+     * fault rows on any rank or with 0 layers. */
+    std::unique_ptr<FaultZoneCorrection>
+    fault_zone(const unsigned int level,
+               const Matrix      &a,
+               const unsigned int layers) const;
+
     void
     v_cycle(const unsigned int level, Vector &x, const Vector &b) const;
 
@@ -180,6 +204,8 @@ namespace lithostress
     std::vector<AffineConstraints<double>>           hanging_nodes;
     /** Each level's owned DoFs by support point (group_nodes()). */
     std::vector<Nodes> nodes;
+    /** Each level's local rows on the faults (fault_dofs()). */
+    std::vector<std::vector<unsigned int>> zone_seeds;
     /** The DoFs of each level a rank owns in the level operators: the
      * finest level's own, a contiguous range of each coarser one (whole
      * on every rank). */
@@ -194,8 +220,11 @@ namespace lithostress
     std::vector<std::unique_ptr<Matrix>>   level_matrices;
     const Matrix                          *finest_matrix = nullptr;
     std::vector<std::unique_ptr<Smoother>> smoothers;
-    SparsityPattern                        coarse_pattern;
-    SparseMatrix<double>                   coarse_matrix;
+    /** zones[l]: the fault zone's correction on level l ≥ 1 (empty
+     * without faults or with Settings::fault_zone_layers = 0). */
+    std::vector<std::unique_ptr<FaultZoneCorrection>> zones;
+    SparsityPattern                                   coarse_pattern;
+    SparseMatrix<double>                              coarse_matrix;
     /** The coarsest operator's factorisation: Cholesky (CHOLMOD) where it
      * is symmetric positive definite, which solves without UMFPACK's
      * iterative refinement in a fraction of its time, else LU. */
