@@ -1322,8 +1322,9 @@ namespace lithostress
       if (solve(limit, kept_levels))
         return;
       // Continued from where the kept levels stalled (GMRES's iterate has
-      // a smaller residual than its start; no copy of the start is held,
-      // a vector at the solve's peak memory).
+      // a smaller residual than its start, CG's a smaller error in the
+      // energy norm; no copy of the start is held, a vector at the solve's
+      // peak memory).
       progress("  sliding: the kept multigrid levels stalled; made again");
       set_up_preconditioner();
       solve(5000, false);

@@ -167,7 +167,9 @@ namespace lithostress
     for (const auto &part : all_entries)
       for (const ZoneEntry &entry : part)
         zone_pattern.add(entry.row, entry.column);
-    block.clear();
+    // (UMFPACK copies A_zz: the matrix is not kept.)
+    SparsityPattern      pattern;
+    SparseMatrix<double> block;
     pattern.copy_from(zone_pattern);
     block.reinit(pattern);
     for (const auto &part : all_entries)
@@ -180,6 +182,7 @@ namespace lithostress
         block.set(i, i, 1.);
     if (n > 0)
       factor.initialize(block);
+    factor_bytes = block.memory_consumption();
     local.reinit(n);
   }
 
@@ -219,7 +222,6 @@ namespace lithostress
            columns.capacity() * sizeof(unsigned int) +
            values.capacity() * sizeof(double) +
            (column_values ? column_values->MyLength() * sizeof(double) : 0) +
-           pattern.memory_consumption() + 2 * block.memory_consumption() +
-           local.memory_consumption();
+           factor_bytes + local.memory_consumption();
   }
 } // namespace lithostress

@@ -17,6 +17,9 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -177,24 +180,10 @@ main(int argc, char **argv)
 
   // The energy norm of the error x* − x, x* from CG on A (1e-14 of |b|).
   TrilinosVector exact(b);
-  {
-    TrilinosVector p(b), q(b), residual(b);
-    exact     = 0;
-    residual  = b;
-    p         = residual;
-    double rr = residual * residual;
-    for (unsigned int k = 0; k < 2000 && std::sqrt(rr) > 1e-14 * b.l2_norm();
-         ++k)
-      {
-        a.vmult(q, p);
-        const double alpha = rr / (p * q);
-        exact.add(alpha, p);
-        residual.add(-alpha, q);
-        const double next = residual * residual;
-        p.sadd(next / rr, 1., residual);
-        rr = next;
-      }
-  }
+  exact = 0;
+  SolverControl            control(2000, 1e-14 * b.l2_norm());
+  SolverCG<TrilinosVector> cg(control);
+  cg.solve(a, exact, b, PreconditionIdentity());
   TrilinosVector before(exact), after(exact);
   before -= start;
   after -= x;

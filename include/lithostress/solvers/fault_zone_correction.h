@@ -76,8 +76,8 @@ namespace lithostress
       return rows.size();
     }
 
-    /** Bytes of the zone's rows and factorisation (the factor's own
-     * workspace estimated by its matrix). */
+    /** Bytes of the zone's rows and factorisation (the factors
+     * estimated by A_zz's size). */
     std::size_t
     memory_consumption() const;
 
@@ -94,10 +94,10 @@ namespace lithostress
     std::unique_ptr<Epetra_Map>    column_map;
     std::unique_ptr<Epetra_Import> import;
     std::unique_ptr<Epetra_Vector> column_values;
-    /** The whole zone's A_zz and its LU factors. */
-    SparsityPattern      pattern;
-    SparseMatrix<double> block;
-    SparseDirectUMFPACK  factor;
+    /** The LU factors of the whole zone's A_zz, and the bytes of A_zz
+     * (the factors' size is at least that). */
+    SparseDirectUMFPACK factor;
+    std::size_t         factor_bytes = 0;
     /** This rank's first row in the whole zone's numbering. */
     unsigned int first = 0;
     /** The whole zone's residual, then its correction. */
