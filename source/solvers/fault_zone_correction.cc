@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <lithostress/base/gather_on_all.h>
 #include <lithostress/solvers/fault_zone_correction.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -8,7 +9,7 @@
 #include <Epetra_Map.h>
 #include <Epetra_Vector.h>
 
-#include <map>
+#include <unordered_map>
 
 namespace lithostress
 {
@@ -19,14 +20,6 @@ namespace lithostress
     {
       unsigned int row, column;
       double       value;
-
-      /** For Utilities::MPI::all_gather(). */
-      template <class Archive>
-      void
-      serialize(Archive &archive, const unsigned int)
-      {
-        archive &row &column &value;
-      }
     };
 
     /** Row @p row of @p a as (length, values, local columns). */
@@ -78,11 +71,9 @@ namespace lithostress
                         epetra.GCID64(row.columns[e])));
               }
           if (Utilities::MPI::n_mpi_processes(communicator) > 1)
-            for (const auto &part :
-                 Utilities::MPI::all_gather(communicator, elsewhere))
-              for (const auto gid : part)
-                if (const int r = epetra.RowMap().LID(gid); r >= 0)
-                  grown[r] = 1;
+            for (const auto gid : gather_on_all(communicator, elsewhere))
+              if (const int r = epetra.RowMap().LID(gid); r >= 0)
+                grown[r] = 1;
           in_zone.swap(grown);
         }
       return in_zone;
@@ -108,8 +99,9 @@ namespace lithostress
     offsets.assign(1, 0);
     columns.clear();
     values.clear();
-    std::vector<TrilinosWrappers::types::int_type>            needed;
-    std::map<TrilinosWrappers::types::int_type, unsigned int> position;
+    std::vector<TrilinosWrappers::types::int_type> needed;
+    std::unordered_map<TrilinosWrappers::types::int_type, unsigned int>
+      position;
     for (int r = 0; r < n_rows; ++r)
       {
         if (!in_zone[r])
@@ -141,17 +133,18 @@ namespace lithostress
     for (const unsigned int r : rows)
       mine.push_back(
         static_cast<TrilinosWrappers::types::int_type>(epetra.GRID64(r)));
-    const auto all_rows     = Utilities::MPI::all_gather(communicator, mine);
     const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-    std::map<TrilinosWrappers::types::int_type, unsigned int> zone_of;
-    unsigned int                                              n = 0;
-    for (unsigned int p = 0; p < all_rows.size(); ++p)
-      {
-        if (p == rank)
-          first = n;
-        for (const auto gid : all_rows[p])
-          zone_of[gid] = n++;
-      }
+    const std::vector<unsigned int> counts =
+      Utilities::MPI::all_gather(communicator,
+                                 static_cast<unsigned int>(mine.size()));
+    first = 0;
+    for (unsigned int p = 0; p < rank; ++p)
+      first += counts[p];
+    std::unordered_map<TrilinosWrappers::types::int_type, unsigned int> zone_of;
+    const auto         all_rows = gather_on_all(communicator, mine);
+    const unsigned int n        = all_rows.size();
+    for (unsigned int z = 0; z < n; ++z)
+      zone_of[all_rows[z]] = z;
     std::vector<ZoneEntry> entries;
     for (unsigned int i = 0; i < rows.size(); ++i)
       for (auto e = offsets[i]; e < offsets[i + 1]; ++e)
@@ -160,21 +153,17 @@ namespace lithostress
     DynamicSparsityPattern zone_pattern(n, n);
     for (unsigned int i = 0; i < n; ++i)
       zone_pattern.add(i, i);
-    const auto all_entries =
-      Utilities::MPI::n_mpi_processes(communicator) > 1
-        ? Utilities::MPI::all_gather(communicator, entries)
-        : std::vector<std::vector<ZoneEntry>>{entries};
-    for (const auto &part : all_entries)
-      for (const ZoneEntry &entry : part)
-        zone_pattern.add(entry.row, entry.column);
+    const std::vector<ZoneEntry> all_entries =
+      gather_on_all(communicator, entries);
+    for (const ZoneEntry &entry : all_entries)
+      zone_pattern.add(entry.row, entry.column);
     // (UMFPACK copies A_zz: the matrix is not kept.)
     SparsityPattern      pattern;
     SparseMatrix<double> block;
     pattern.copy_from(zone_pattern);
     block.reinit(pattern);
-    for (const auto &part : all_entries)
-      for (const ZoneEntry &entry : part)
-        block.add(entry.row, entry.column, entry.value);
+    for (const ZoneEntry &entry : all_entries)
+      block.add(entry.row, entry.column, entry.value);
     // A row no function of the level reaches (a coarser level's hanging
     // node) is zero, and so is its residual: kept at zero.
     for (unsigned int i = 0; i < n; ++i)

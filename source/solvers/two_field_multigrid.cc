@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <lithostress/base/gather_on_all.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/solvers/galerkin_product.h>
 #include <lithostress/solvers/two_field_multigrid.h>
@@ -174,32 +175,6 @@ namespace lithostress
       types::global_dof_index row, column;
       double                  value;
     };
-
-    /** Every rank's @p mine, concatenated in rank order, on every rank
-     * (MPI_Allgatherv of the bytes: no serialisation). */
-    std::vector<MatrixEntry>
-    gather_on_all(const MPI_Comm comm, const std::vector<MatrixEntry> &mine)
-    {
-      if (Utilities::MPI::n_mpi_processes(comm) == 1)
-        return mine;
-      const int              bytes  = mine.size() * sizeof(MatrixEntry);
-      const std::vector<int> counts = Utilities::MPI::all_gather(comm, bytes);
-      std::vector<int>       offsets(counts.size(), 0);
-      for (unsigned int r = 1; r < counts.size(); ++r)
-        offsets[r] = offsets[r - 1] + counts[r - 1];
-      std::vector<MatrixEntry> all((offsets.back() + counts.back()) /
-                                   sizeof(MatrixEntry));
-      const int                error = MPI_Allgatherv(mine.data(),
-                                       bytes,
-                                       MPI_BYTE,
-                                       all.data(),
-                                       counts.data(),
-                                       offsets.data(),
-                                       MPI_BYTE,
-                                       comm);
-      AssertThrowMPI(error);
-      return all;
-    }
 
     /** The displacement field (active FE index) of each coarse cell of
      * @p dof_handler's mesh, from every rank. */
