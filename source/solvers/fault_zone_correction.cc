@@ -9,6 +9,7 @@
 #include <Epetra_Map.h>
 #include <Epetra_Vector.h>
 
+#include <algorithm>
 #include <unordered_map>
 
 namespace lithostress
@@ -84,21 +85,28 @@ namespace lithostress
 
   FaultZoneCorrection::~FaultZoneCorrection() = default;
 
-  void
+  bool
   FaultZoneCorrection::initialize(const TrilinosWrappers::SparseMatrix &a,
                                   const std::vector<unsigned int>      &seeds,
-                                  const unsigned int                    layers)
+                                  const unsigned int                    layers,
+                                  const double largest_fraction)
   {
     const Epetra_CrsMatrix &epetra       = a.trilinos_matrix();
     const int               n_rows       = epetra.NumMyRows();
     const MPI_Comm          communicator = a.get_mpi_communicator();
     const std::vector<char> in_zone      = rows_within(a, seeds, layers);
-    // The zone's rows and their entries; their columns (this rank's and
-    // other ranks') are read through a vector of just those columns.
     rows.clear();
     offsets.assign(1, 0);
     columns.clear();
     values.clear();
+    const std::size_t zone_rows =
+      Utilities::MPI::sum(static_cast<std::size_t>(
+                            std::count(in_zone.begin(), in_zone.end(), 1)),
+                          communicator);
+    if (zone_rows > largest_fraction * a.m())
+      return false;
+    // The zone's rows and their entries; their columns (this rank's and
+    // other ranks') are read through a vector of just those columns.
     std::vector<TrilinosWrappers::types::int_type> needed;
     std::unordered_map<TrilinosWrappers::types::int_type, unsigned int>
       position;
@@ -173,6 +181,7 @@ namespace lithostress
       factor.initialize(block);
     factor_bytes = block.memory_consumption();
     local.reinit(n);
+    return true;
   }
 
   void

@@ -588,7 +588,7 @@ namespace lithostress
           std::make_shared<NodalBlockInverse>(block_inverse(level, a));
         smoothers[level] = std::make_unique<Smoother>();
         smoothers[level]->initialize(a, data);
-        zones[level] = fault_zone(level, a, settings.fault_zone_layers);
+        zones[level] = fault_zone(level, a, settings);
       }
 
     // The coarsest operator, gathered on every rank and factorised there.
@@ -694,16 +694,20 @@ namespace lithostress
   std::unique_ptr<FaultZoneCorrection>
   TwoFieldMultigrid<dim>::fault_zone(const unsigned int level,
                                      const Matrix      &a,
-                                     const unsigned int layers) const
+                                     const Settings    &settings) const
   {
-    if (layers == 0)
+    if (settings.fault_zone_layers == 0)
       return nullptr;
     const std::vector<unsigned int> &seeds = zone_seeds[level];
     // (Made by all ranks or none: it is collective.)
     if (!Utilities::MPI::logical_or(!seeds.empty(), a.get_mpi_communicator()))
       return nullptr;
     auto zone = std::make_unique<FaultZoneCorrection>();
-    zone->initialize(a, seeds, layers);
+    if (!zone->initialize(a,
+                          seeds,
+                          settings.fault_zone_layers,
+                          settings.fault_zone_largest_fraction))
+      return nullptr;
     return zone;
   }
 

@@ -131,8 +131,16 @@ main(int argc, char **argv)
   for (const auto row : owned)
     if (row % n == fault_column)
       seeds.push_back(row - first);
+  // The zone is 2 layers + 1 of the n columns: made under a largest
+  // fraction just above that, not made under one just below.
+  const double        zone_fraction = (2. * layers + 1) / n;
   FaultZoneCorrection zone;
-  zone.initialize(a, seeds, layers);
+  check(zone.initialize(a, seeds, layers, zone_fraction + 0.5 / n),
+        "the zone is made where it holds no more than the largest fraction");
+  FaultZoneCorrection too_large;
+  check(!too_large.initialize(a, seeds, layers, zone_fraction - 0.5 / n) &&
+          Utilities::MPI::sum(too_large.size(), MPI_COMM_WORLD) == 0,
+        "no zone where it would hold more than the largest fraction");
   const auto in_zone = [](const types::global_dof_index row) {
     const unsigned int j = row % n;
     return j + layers >= fault_column && j <= fault_column + layers;

@@ -72,6 +72,9 @@ namespace lithostress
        * solved exactly after the pre-smoothing and before the
        * post-smoothing (FaultZoneCorrection); 0: none. */
       unsigned int fault_zone_layers = 6;
+      /** A level whose zone would hold more than this fraction of its
+       * rows gets none (FaultZoneCorrection::initialize()). */
+      double fault_zone_largest_fraction = 0.5;
     };
 
     /**
@@ -187,13 +190,15 @@ namespace lithostress
     std::vector<unsigned int>
     fault_dofs(const unsigned int level) const;
 
-    /** The correction on the zone of @p layers layers around the fault
-     * rows of @p level (zone_seeds), whose matrix is @p a; none without
-     * fault rows on any rank or with 0 layers. */
+    /** The correction on the zone of Settings::fault_zone_layers layers
+     * around the fault rows of @p level (zone_seeds), whose matrix is
+     * @p a; none without fault rows on any rank, with 0 layers or where
+     * the zone would hold more than Settings::fault_zone_largest_fraction
+     * of the level. */
     std::unique_ptr<FaultZoneCorrection>
     fault_zone(const unsigned int level,
                const Matrix      &a,
-               const unsigned int layers) const;
+               const Settings    &settings) const;
 
     void
     v_cycle(const unsigned int level, Vector &x, const Vector &b) const;
