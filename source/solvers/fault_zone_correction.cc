@@ -104,7 +104,14 @@ namespace lithostress
                             std::count(in_zone.begin(), in_zone.end(), 1)),
                           communicator);
     if (zone_rows > largest_fraction * a.m())
-      return false;
+      {
+        import.reset();
+        column_values.reset();
+        column_map.reset();
+        local.reinit(0);
+        factor_bytes = 0;
+        return false;
+      }
     // The zone's rows and their entries; their columns (this rank's and
     // other ranks') are read through a vector of just those columns.
     std::vector<TrilinosWrappers::types::int_type> needed;
@@ -188,6 +195,9 @@ namespace lithostress
   FaultZoneCorrection::correct(TrilinosWrappers::MPI::Vector       &x,
                                const TrilinosWrappers::MPI::Vector &b) const
   {
+    Assert(import != nullptr,
+           ExcMessage("FaultZoneCorrection::correct() needs a zone: "
+                      "initialize() returned false or was not called"));
     // (Collective: every rank imports its zone's columns, also an empty
     // zone.)
     column_values->Import(x.trilinos_vector(), *import, Insert);
