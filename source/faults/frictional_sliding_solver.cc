@@ -1871,7 +1871,11 @@ namespace lithostress
              << "shear " << c.excess
              << " Pa); the last iterate is written out. Raise Faults/Sliding "
                 "solver/Maximum iterations"
-             << (newton ? "" : " or the Convergence factor");
+             << (newton ? ""
+                        : ", or change the Convergence factor (raise it "
+                          "while the excess shear falls steadily, lower it "
+                          "where it oscillates near the factor at which the "
+                          "iteration diverges)");
         throw ComputationError(what.str());
       }
   }
