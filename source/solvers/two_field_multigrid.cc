@@ -131,19 +131,26 @@ namespace lithostress
     }
 
     /**
-     * Level @p level of the hierarchy of @p fine, whole on every rank:
-     * its coarse cells (no manifolds: the transfer is topological)
-     * refined where @p refined says, up to level @p level, so that a cell
-     * is active on it if it has that level or is an active cell of a lower
-     * one. Built here rather than by deal.II's coarsening sequence, whose
-     * copy of the triangulation fails on a refined
-     * TransfiniteInterpolationManifold (the subduction zone's).
+     * The meshes of the coarser levels of @p fine's hierarchy, coarsest
+     * first, whole on every rank: @p fine's coarse cells (no manifolds:
+     * the transfer is topological) refined where @p refined says, then
+     * coarsened globally, one level at a time: every cell whose siblings
+     * are all active is coarsened where deal.II's one-irregular rule allows
+     * it, until the coarse mesh is reached. On a uniformly refined mesh
+     * each step is a whole level, as a truncation at that level would
+     * be; on a mesh refined towards a fault, as the chapter-7 models'
+     * goal-oriented cycles make them, a truncation at level l leaves every
+     * cell of level l and coarser in place: below the finest level of
+     * 262 k DoFs its levels had 262, 260, 257, 245, 203, 140, 65 and 17 k,
+     * so that a V-cycle cost several times the uniform one's. Built here rather
+     * than by deal.II's coarsening sequence, whose copy of the triangulation
+     * fails on a refined TransfiniteInterpolationManifold (the subduction
+     * zone's).
      */
     template <int dim>
-    std::unique_ptr<Triangulation<dim>>
-    truncated_mesh(const Triangulation<dim>    &fine,
-                   const std::set<std::string> &refined,
-                   const unsigned int           level)
+    std::vector<std::unique_ptr<Triangulation<dim>>>
+    coarsened_meshes(const Triangulation<dim>    &fine,
+                     const std::set<std::string> &refined)
     {
       std::vector<Point<dim>>    vertices = fine.get_vertices();
       std::vector<CellData<dim>> cells;
@@ -157,16 +164,31 @@ namespace lithostress
         }
       SubCellData no_boundary;
       GridTools::delete_unused_vertices(vertices, cells, no_boundary);
-      auto mesh = std::make_unique<Triangulation<dim>>();
-      mesh->create_triangulation(vertices, cells, no_boundary);
-      for (unsigned int k = 0; k < level; ++k)
+      auto finest = std::make_unique<Triangulation<dim>>();
+      finest->create_triangulation(vertices, cells, no_boundary);
+      for (unsigned int k = 0; k + 1 < fine.n_global_levels(); ++k)
         {
-          for (const auto &cell : mesh->active_cell_iterators_on_level(k))
-            if (refined.count(path_of(*mesh, cell->id())) != 0)
+          for (const auto &cell : finest->active_cell_iterators_on_level(k))
+            if (refined.count(path_of(*finest, cell->id())) != 0)
               cell->set_refine_flag();
-          mesh->execute_coarsening_and_refinement();
+          finest->execute_coarsening_and_refinement();
         }
-      return mesh;
+      std::vector<std::unique_ptr<Triangulation<dim>>> meshes;
+      const Triangulation<dim>                        *finer = finest.get();
+      while (finer->n_levels() > 1)
+        {
+          auto mesh = std::make_unique<Triangulation<dim>>();
+          mesh->copy_triangulation(*finer);
+          for (const auto &cell : mesh->active_cell_iterators())
+            cell->set_coarsen_flag();
+          mesh->execute_coarsening_and_refinement();
+          AssertThrow(mesh->n_active_cells() < finer->n_active_cells(),
+                      ExcInternalError());
+          meshes.push_back(std::move(mesh));
+          finer = meshes.back().get();
+        }
+      std::reverse(meshes.begin(), meshes.end());
+      return meshes;
     }
 
     /** One entry of a sparse matrix. */
@@ -358,15 +380,15 @@ namespace lithostress
   TwoFieldMultigrid<dim>::make_hierarchy(const DoFHandler<dim> &dof_handler,
                                          const hp::FECollection<dim> &fe)
   {
-    const Triangulation<dim>       &tria    = dof_handler.get_triangulation();
-    const MPI_Comm                  comm    = dof_handler.get_communicator();
-    const unsigned int              n       = tria.n_global_levels();
-    const std::set<std::string>     refined = refined_cells(tria);
-    const std::vector<unsigned int> fields  = coarse_cell_fields(dof_handler);
+    const Triangulation<dim>       &tria   = dof_handler.get_triangulation();
+    const MPI_Comm                  comm   = dof_handler.get_communicator();
+    const std::vector<unsigned int> fields = coarse_cell_fields(dof_handler);
+    // (The levels' DoF handlers hold their meshes: released first.)
+    coarser_dofs.clear();
+    triangulations             = coarsened_meshes(tria, refined_cells(tria));
+    const unsigned int n       = triangulations.size() + 1;
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
-    triangulations.clear();
-    coarser_dofs.clear();
     coarser_dofs.resize(n - 1);
     level_dofs.assign(n, nullptr);
     level_dofs[n - 1] = &dof_handler;
@@ -376,8 +398,7 @@ namespace lithostress
     hanging_nodes.resize(n);
     for (unsigned int level = 0; level + 1 < n; ++level)
       {
-        triangulations.push_back(truncated_mesh(tria, refined, level));
-        const Triangulation<dim> &mesh = *triangulations.back();
+        const Triangulation<dim> &mesh = *triangulations[level];
         auto dofs = std::make_unique<DoFHandler<dim>>(mesh);
         for (const auto &cell : dofs->active_cell_iterators())
           cell->set_active_fe_index(fields[coarse_index(mesh, cell->id())]);

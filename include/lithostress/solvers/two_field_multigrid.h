@@ -26,9 +26,11 @@ namespace lithostress
    * the faults (doc/faults.md), the space deal.II's level DoFs and
    * geometric transfers do not handle (hp DoF handlers).
    *
-   * Level l is the finest mesh truncated at refinement level l (a cell
-   * is active on it if it has level l or is an active cell of a lower
-   * level), with the same two fields, so that a coarse function of either side
+   * Each level's mesh is the next finer one coarsened globally once
+   * (every cell whose siblings are all active, where the one-irregular
+   * rule allows it: on a uniform mesh a whole level, on an adaptive one
+   * the finest cells everywhere), down to the coarse mesh, with the same
+   * two fields, so that a coarse function of either side
    * is a fine function of the same side: the spaces are nested across the fault
    * as well. The prolongation P_l is the coarse cells' interpolation,
    * continuous through each level's hanging-node constraints and onto the fine
