@@ -10,6 +10,7 @@
 #include <Epetra_Vector.h>
 
 #include <algorithm>
+#include <numeric>
 #include <unordered_map>
 
 namespace lithostress
@@ -99,19 +100,22 @@ namespace lithostress
     offsets.assign(1, 0);
     columns.clear();
     values.clear();
-    const std::size_t zone_rows =
-      Utilities::MPI::sum(static_cast<std::size_t>(
-                            std::count(in_zone.begin(), in_zone.end(), 1)),
-                          communicator);
-    if (zone_rows > largest_fraction * a.m())
-      {
-        import.reset();
-        column_values.reset();
-        column_map.reset();
-        local.reinit(0);
-        factor_bytes = 0;
-        return false;
-      }
+    import.reset();
+    column_values.reset();
+    column_map.reset();
+    local.reinit(0);
+    factor_bytes = 0;
+    // Each rank's number of zone rows: their sum is the whole zone's, and
+    // the ranks' rows are numbered one rank after the other (this rank's
+    // from `first`).
+    const std::vector<unsigned int> counts = Utilities::MPI::all_gather(
+      communicator,
+      static_cast<unsigned int>(std::count(in_zone.begin(), in_zone.end(), 1)));
+    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n    = std::accumulate(counts.begin(), counts.end(), 0u);
+    first = std::accumulate(counts.begin(), counts.begin() + rank, 0u);
+    if (n > largest_fraction * a.m())
+      return false;
     // The zone's rows and their entries; their columns (this rank's and
     // other ranks') are read through a vector of just those columns.
     std::vector<TrilinosWrappers::types::int_type> needed;
@@ -141,23 +145,15 @@ namespace lithostress
     import        = std::make_unique<Epetra_Import>(*column_map, source);
     column_values = std::make_unique<Epetra_Vector>(*column_map);
 
-    // The whole zone on every rank: the ranks' zone rows one after the
-    // other (this rank's from `first`), A_zz from all of them, so that
-    // the correction is the same as on one rank.
+    // The whole zone on every rank, A_zz from all ranks' rows, so that the
+    // correction is the same as on one rank.
     std::vector<TrilinosWrappers::types::int_type> mine;
     for (const unsigned int r : rows)
       mine.push_back(
         static_cast<TrilinosWrappers::types::int_type>(epetra.GRID64(r)));
-    const unsigned int rank = Utilities::MPI::this_mpi_process(communicator);
-    const std::vector<unsigned int> counts =
-      Utilities::MPI::all_gather(communicator,
-                                 static_cast<unsigned int>(mine.size()));
-    first = 0;
-    for (unsigned int p = 0; p < rank; ++p)
-      first += counts[p];
+    const auto all_rows = gather_on_all(communicator, mine);
+    AssertDimension(all_rows.size(), n);
     std::unordered_map<TrilinosWrappers::types::int_type, unsigned int> zone_of;
-    const auto         all_rows = gather_on_all(communicator, mine);
-    const unsigned int n        = all_rows.size();
     for (unsigned int z = 0; z < n; ++z)
       zone_of[all_rows[z]] = z;
     std::vector<ZoneEntry> entries;

@@ -131,26 +131,18 @@ namespace lithostress
     }
 
     /**
-     * The meshes of the coarser levels of @p fine's hierarchy, coarsest
-     * first, whole on every rank: @p fine's coarse cells (no manifolds:
-     * the transfer is topological) refined where @p refined says, then
-     * coarsened globally, one level at a time: every cell whose siblings
-     * are all active is coarsened where deal.II's one-irregular rule allows
-     * it, until the coarse mesh is reached. On a uniformly refined mesh
-     * each step is a whole level, as a truncation at that level would
-     * be; on a mesh refined towards a fault, as the chapter-7 models'
-     * goal-oriented cycles make them, a truncation at level l leaves every
-     * cell of level l and coarser in place: below the finest level of
-     * 262 k DoFs its levels had 262, 260, 257, 245, 203, 140, 65 and 17 k,
-     * so that a V-cycle cost several times the uniform one's. Built here rather
-     * than by deal.II's coarsening sequence, whose copy of the triangulation
+     * The mesh of @p fine's coarse cells (no manifolds: the transfer is
+     * topological) refined where @p refined says, whole on every rank
+     * (deal.II adds the refinement the one-irregular rule needs). Built
+     * here rather than by copying and coarsening triangulations, whose copy
      * fails on a refined TransfiniteInterpolationManifold (the subduction
-     * zone's).
+     * zone's) and, of a copy without manifolds, costs a serial finest mesh
+     * on every rank.
      */
     template <int dim>
-    std::vector<std::unique_ptr<Triangulation<dim>>>
-    coarsened_meshes(const Triangulation<dim>    &fine,
-                     const std::set<std::string> &refined)
+    std::unique_ptr<Triangulation<dim>>
+    refined_mesh(const Triangulation<dim>    &fine,
+                 const std::set<std::string> &refined)
     {
       std::vector<Point<dim>>    vertices = fine.get_vertices();
       std::vector<CellData<dim>> cells;
@@ -164,28 +156,59 @@ namespace lithostress
         }
       SubCellData no_boundary;
       GridTools::delete_unused_vertices(vertices, cells, no_boundary);
-      auto finest = std::make_unique<Triangulation<dim>>();
-      finest->create_triangulation(vertices, cells, no_boundary);
+      auto mesh = std::make_unique<Triangulation<dim>>();
+      mesh->create_triangulation(vertices, cells, no_boundary);
       for (unsigned int k = 0; k + 1 < fine.n_global_levels(); ++k)
         {
-          for (const auto &cell : finest->active_cell_iterators_on_level(k))
-            if (refined.count(path_of(*finest, cell->id())) != 0)
-              cell->set_refine_flag();
-          finest->execute_coarsening_and_refinement();
-        }
-      std::vector<std::unique_ptr<Triangulation<dim>>> meshes;
-      const Triangulation<dim>                        *finer = finest.get();
-      while (finer->n_levels() > 1)
-        {
-          auto mesh = std::make_unique<Triangulation<dim>>();
-          mesh->copy_triangulation(*finer);
-          for (const auto &cell : mesh->active_cell_iterators())
-            cell->set_coarsen_flag();
+          bool flagged = false;
+          for (const auto &cell : mesh->active_cell_iterators_on_level(k))
+            if (refined.count(path_of(*mesh, cell->id())) != 0)
+              {
+                cell->set_refine_flag();
+                flagged = true;
+              }
+          if (!flagged)
+            break;
           mesh->execute_coarsening_and_refinement();
-          AssertThrow(mesh->n_active_cells() < finer->n_active_cells(),
-                      ExcInternalError());
-          meshes.push_back(std::move(mesh));
-          finer = meshes.back().get();
+        }
+      return mesh;
+    }
+
+    /**
+     * The meshes of the coarser levels of @p fine's hierarchy, coarsest
+     * first, whole on every rank: each is the next finer one coarsened
+     * globally once, i.e. the refined cells @p refined of the finest mesh
+     * less, at each step, those whose children are all active (where that
+     * would break the one-irregular rule, refined_mesh() refines them
+     * again), until the coarse mesh is reached. On a uniformly refined
+     * mesh each step is a whole level, as a truncation at that level would
+     * be; on a mesh refined towards a fault, as the chapter-7 models'
+     * goal-oriented cycles make them, a truncation at level l leaves every
+     * cell of level l and coarser in place: below the finest level of
+     * 262 k DoFs its levels had 262, 260, 257, 245, 203, 140, 65 and 17 k,
+     * so that a V-cycle cost several times the uniform one's.
+     */
+    template <int dim>
+    std::vector<std::unique_ptr<Triangulation<dim>>>
+    coarsened_meshes(const Triangulation<dim>    &fine,
+                     const std::set<std::string> &refined)
+    {
+      std::vector<std::unique_ptr<Triangulation<dim>>> meshes;
+      std::set<std::string>                            still = refined;
+      while (!still.empty())
+        {
+          std::set<std::string> coarser;
+          for (const std::string &path : still)
+            for (unsigned int c = 0;
+                 c < GeometryInfo<dim>::max_children_per_cell;
+                 ++c)
+              if (still.count(path + char('0' + c)) != 0)
+                {
+                  coarser.insert(path);
+                  break;
+                }
+          still.swap(coarser);
+          meshes.push_back(refined_mesh(fine, still));
         }
       std::reverse(meshes.begin(), meshes.end());
       return meshes;
