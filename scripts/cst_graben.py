@@ -39,6 +39,7 @@ thesis's size (THESIS_SIZED_MESHES) and on a fine one (FINE_MESH), and
 writes OUTDIR/cst_graben.csv:
   thickness_km,tension_MPa,columns,rows,diagonal,width_km,
   width_interpolated_km,throw_m,sliding_depth_km
+and OUTDIR/cst_graben.png (the widths against the layer's thickness).
 """
 import argparse
 import csv
@@ -318,6 +319,37 @@ def write_comparison(rows, path):
                              "%.1f" % throw, "%.2f" % depth])
 
 
+def plot_comparison(rows, path):
+    """Widths against layer thickness: every thesis-sized CST mesh, the
+    fine CST mesh, the thin plate's pi alpha / 4 + h / 2 and Mithen's
+    50-55 km."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, ax = plt.subplots(figsize=(6.5, 4.5))
+    ax.axhspan(50, 55, color="tab:red", alpha=0.15, label="Mithen (1980): 50-55 km")
+    thick = sorted(LONG_WAVELENGTH)
+    markers = {1: "v", 2: "o", 4: "^"}
+    for ny, marker in markers.items():
+        points = [(r[1] + (r[0][0] - 50) / 40, r[3]) for r in rows
+                  if r[0] != FINE_MESH and r[0][1] == ny and LONG_WAVELENGTH.get(r[1]) == r[2]]
+        ax.plot(*zip(*points), marker, color="tab:grey", mfc="none", ms=5,
+                label="thesis-sized CST meshes, %d row%s" % (ny, "s" if ny > 1 else ""))
+    fine = [r[3] for h in thick for r in rows if r[0] == FINE_MESH and r[1:3] == (h, LONG_WAVELENGTH[h])]
+    ax.plot(thick, fine, "s-", color="tab:blue", label="fine CST mesh (converged)")
+    h = np.linspace(8, 32, 50)
+    plate = [math.pi * (4 * E * (x * 1e3) ** 3 / (12 * (1 - NU ** 2)) / (RHO_FLUID * G)) ** 0.25
+             / 4e3 + x / 2 for x in h]
+    ax.plot(h, plate, "k--", lw=0.8, label="thin plate: pi alpha / 4 + h / 2")
+    ax.set_xlabel("elastic layer thickness [km] (meshes of 40, 50, 60 columns left to right)")
+    ax.set_ylabel("graben width [km]")
+    ax.set_title("Graben widths on constant strain triangles (thesis §6.1.7)", fontsize=10)
+    ax.set_xticks(thick)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=130)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("outdir")
@@ -326,6 +358,7 @@ def main():
     rows = mithen_comparison()
     path = os.path.join(args.outdir, "cst_graben.csv")
     write_comparison(rows, path)
+    plot_comparison(rows, os.path.join(args.outdir, "cst_graben.png"))
     for h, tension in sorted(LONG_WAVELENGTH.items()):
         coarse = [r[3] for r in rows if r[1] == h and r[2] == tension and r[0] != FINE_MESH]
         fine = [r[3] for r in rows if r[1] == h and r[2] == tension and r[0] == FINE_MESH][0]

@@ -584,6 +584,7 @@ def mithen_cst(outdir, q2_throw):
     measured on 27 CST meshes of the thesis's size against a fine one."""
     rows = cst_graben.mithen_comparison()
     cst_graben.write_comparison(rows, os.path.join(outdir, "cst_graben.csv"))
+    cst_graben.plot_comparison(rows, os.path.join(outdir, "cst_graben.png"))
     fine = {(r[1], r[2]): r[3] for r in rows if r[0] == cst_graben.FINE_MESH}
     widths = {h: [r[3] for r in rows if (r[1], r[2]) == (h, t) and r[0] != cst_graben.FINE_MESH]
               for h, t in cst_graben.LONG_WAVELENGTH.items()}
