@@ -21,7 +21,10 @@ with the dual node method of thesis §5.2 on constant strain triangles
     spring's compression plus the lithostatic 2911 g d less the pore
     pressure 1000 g d (FSHEAR), solved exactly by an active set: a node
     slides where the spring's shear would exceed mu times that stress, and
-    then carries mu times it;
+    then carries mu times it, and is free where that stress is tensile
+    (the friction takes the springs' traction, not Mithen's average of
+    the two CSTs beside the fault: the point here is the elements'
+    stiffness);
   - the columns nx across and the rows ny through the layer: each
     rectangle cut into two CSTs along its "/" diagonal (or "\\", or
     alternating), the columns sheared near the fault so that its nodes lie
