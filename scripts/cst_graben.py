@@ -53,10 +53,11 @@ import numpy as np
 import scipy.sparse
 import scipy.sparse.linalg
 
+# The plate, the fault's dip and the fluid base of graben_widths.py.
+from graben_widths import DIP, E, G, NU, flexural_parameter
+from graben_widths import RHO_F as RHO_FLUID
+
 WIDTH, TRACE = 1000e3, 500e3
-DIP = math.atan(2.0)
-E, NU = 0.85e11, 0.25
-RHO_FLUID, G = 2900.0, 9.81
 RHO_LITHOSTATIC, RHO_PORE = 2911.0, 1000.0
 MU = 0.1
 ELEMENT_SHEAR, ELEMENT_NORMAL = 5e10, 1e15
@@ -341,8 +342,7 @@ def plot_comparison(rows, path):
     fine = [r[3] for h in thick for r in rows if r[0] == FINE_MESH and r[1:3] == (h, LONG_WAVELENGTH[h])]
     ax.plot(thick, fine, "s-", color="tab:blue", label="fine CST mesh (converged)")
     h = np.linspace(8, 32, 50)
-    plate = [math.pi * (4 * E * (x * 1e3) ** 3 / (12 * (1 - NU ** 2)) / (RHO_FLUID * G)) ** 0.25
-             / 4e3 + x / 2 for x in h]
+    plate = [math.pi * flexural_parameter(x * 1e3) / 4e3 + x / 2 for x in h]
     ax.plot(h, plate, "k--", lw=0.8, label="thin plate: pi alpha / 4 + h / 2")
     ax.set_xlabel("elastic layer thickness [km] (meshes of 40, 50, 60 columns left to right)")
     ax.set_ylabel("graben width [km]")

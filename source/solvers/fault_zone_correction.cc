@@ -104,6 +104,7 @@ namespace lithostress
     column_values.reset();
     column_map.reset();
     local.reinit(0);
+    factor.reset();
     factor_bytes = 0;
     // Each rank's number of zone rows: their sum is the whole zone's, and
     // the ranks' rows are numbered one rank after the other (this rank's
@@ -181,8 +182,11 @@ namespace lithostress
       if (block.diag_element(i) == 0)
         block.set(i, i, 1.);
     if (n > 0)
-      factor.initialize(block);
-    factor_bytes = block.memory_consumption();
+      {
+        factor = std::make_unique<SparseDirectUMFPACK>();
+        factor->initialize(block);
+        factor_bytes = block.memory_consumption();
+      }
     local.reinit(n);
     return true;
   }
@@ -212,7 +216,7 @@ namespace lithostress
     const MPI_Comm communicator = b.get_mpi_communicator();
     if (Utilities::MPI::n_mpi_processes(communicator) > 1)
       Utilities::MPI::sum(local, communicator, local);
-    factor.solve(local);
+    factor->solve(local);
     double *x_values = x.begin();
     for (unsigned int i = 0; i < rows.size(); ++i)
       x_values[rows[i]] += local[first + i];

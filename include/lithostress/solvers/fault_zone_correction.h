@@ -103,10 +103,11 @@ namespace lithostress
     std::unique_ptr<Epetra_Map>    column_map;
     std::unique_ptr<Epetra_Import> import;
     std::unique_ptr<Epetra_Vector> column_values;
-    /** The LU factors of the whole zone's A_zz, and the bytes of A_zz
-     * (the factors' size is at least that). */
-    SparseDirectUMFPACK factor;
-    std::size_t         factor_bytes = 0;
+    /** The LU factors of the whole zone's A_zz (none for an empty or
+     * unmade zone: initialize() releases an earlier zone's), and the bytes
+     * of A_zz (the factors' size is at least that). */
+    std::unique_ptr<SparseDirectUMFPACK> factor;
+    std::size_t                          factor_bytes = 0;
     /** This rank's first row in the whole zone's numbering. */
     unsigned int first = 0;
     /** The whole zone's residual, then its correction. */
