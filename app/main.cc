@@ -8,6 +8,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/interruption.h>
 #include <lithostress/base/parameter_file.h>
+#include <lithostress/base/renamed_entries.h>
 #include <lithostress/simulator/simulator.h>
 
 #include <iostream>
@@ -34,6 +35,9 @@ namespace
          "format)\n"
          "  lithostress --print-parameters=json   the same as JSON (used to\n"
          "                                        generate doc/parameters.md)\n"
+         "  lithostress --print-renamed-entries   the entries and values that\n"
+         "                                        were renamed or moved (tab-\n"
+         "                                        separated: old, new, since)\n"
          "  lithostress --help                    this text\n"
          "\n"
          "Results go to the `Output directory` of the .prm: ParaView files\n"
@@ -76,6 +80,19 @@ main(int argc, char *argv[])
                                  a == "--print-parameters"
                                    ? ParameterHandler::PRM
                                    : ParameterHandler::JSON);
+          return 0;
+        }
+      if (a == "--print-renamed-entries")
+        {
+          if (root)
+            {
+              for (const auto &r : lithostress::renamed_entries())
+                std::cout << r.old_path << '\t' << r.new_path << '\t' << r.since
+                          << '\n';
+              for (const auto &r : lithostress::renamed_values())
+                std::cout << r.entry << " = " << r.old_value << '\t' << r.entry
+                          << " = " << r.new_value << '\t' << r.since << '\n';
+            }
           return 0;
         }
       if (a == "--resume")

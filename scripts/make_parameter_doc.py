@@ -263,18 +263,49 @@ def write_markdown(sections, out):
         out.write("\n")
 
 
+def renamed_entries(binary):
+    """The rows (old, new, since) of `<binary> --print-renamed-entries`."""
+    result = subprocess.run([binary, "--print-renamed-entries"],
+                            capture_output=True, text=True)
+    if result.returncode != 0:
+        sys.exit("make_parameter_doc: <%s --print-renamed-entries> exited with "
+                 "status %d" % (binary, result.returncode))
+    rows = [line.split("\t") for line in result.stdout.splitlines() if "\t" in line]
+    if not rows or any(len(r) != 3 for r in rows):
+        sys.exit("make_parameter_doc: <%s --print-renamed-entries> printed no "
+                 "table of three columns" % binary)
+    return rows
+
+
+def write_renamed(rows, out):
+    out.write("## Renamed entries\n\n")
+    out.write("An input file that sets one of these is answered with one line "
+              "naming the new entry or value. `<name>` stands for any "
+              "user-named subsection.\n\n")
+    out.write("| Old | New | Since |\n| --- | --- | --- |\n")
+    for old, new, since in rows:
+        out.write("| %s | %s | %s |\n" % (escape_cell("`%s`" % old),
+                                           escape_cell("`%s`" % new),
+                                           escape_cell(since)))
+    out.write("\n")
+
+
 def main(argv):
+    renamed = None
     if len(argv) == 3 and argv[1] == "--json":
         with open(argv[2], encoding="utf-8") as f:
             text = f.read()
     elif len(argv) == 2 and not argv[1].startswith("-"):
         text = run_binary(argv[1])
+        renamed = renamed_entries(argv[1])
     else:
         sys.stderr.write(__doc__)
         return 2
     tree = parse_json(text)
     sections = collect(tree, names_are_mangled(tree))
     write_markdown(sections, sys.stdout)
+    if renamed:
+        write_renamed(renamed, sys.stdout)
     return 0
 
 

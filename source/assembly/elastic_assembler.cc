@@ -294,7 +294,7 @@ namespace lithostress
                            cell_rhs);
 
             if (history_strain != nullptr &&
-                stress_model.maxwell(material.id).is_viscous())
+                stress_model.rheology(material.id).creeps())
               {
                 history_strain->get(cell, history_values);
                 add_initial_strain_terms(fe_values,

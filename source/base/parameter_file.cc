@@ -3,6 +3,7 @@
 
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
+#include <lithostress/base/renamed_entries.h>
 
 #include <cmath>
 #include <fstream>
@@ -88,6 +89,22 @@ namespace lithostress
     return points;
   }
 
+  namespace
+  {
+    /** The InputError for the parser's error @p exc in the file @p filename
+     * with text @p contents: where the file sets an entry that was renamed
+     * or moved, the line that says where it went (the parser only knows
+     * that the old name is not declared); otherwise the parser's message. */
+    [[noreturn]] void
+    throw_input_error_of_file(const std::string   &contents,
+                              const std::string   &filename,
+                              const ExceptionBase &exc)
+    {
+      const std::string renamed = renamed_entry_message(contents, filename);
+      throw InputError(renamed.empty() ? one_line_message(exc) : renamed);
+    }
+  } // namespace
+
   std::vector<std::string>
   ParameterFile::names_from(ParameterHandler               *first_pass,
                             const std::vector<std::string> &path,
@@ -128,6 +145,9 @@ namespace lithostress
       {
         for (unsigned int i = 0; i < entered; ++i)
           prm.leave_subsection();
+        const std::string renamed = renamed_override_message(assignment);
+        if (!renamed.empty())
+          throw InputError(renamed);
         throw InputError("override <" + assignment +
                          ">: " + one_line_message(exc));
       }
@@ -156,7 +176,7 @@ namespace lithostress
       }
     catch (const ExceptionBase &exc)
       {
-        throw InputError(one_line_message(exc));
+        throw_input_error_of_file(contents.str(), filename, exc);
       }
     for (const std::string &o : overrides)
       {
@@ -178,7 +198,7 @@ namespace lithostress
       }
     catch (const ExceptionBase &exc)
       {
-        throw InputError(one_line_message(exc));
+        throw_input_error_of_file(contents.str(), filename, exc);
       }
     for (const std::string &o : overrides)
       apply_override(prm, o);

@@ -1,10 +1,5 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/geometry/geometry_model.h>
-#include <lithostress/geometry/gmsh_mesh.h>
-#include <lithostress/geometry/l_shaped_domain.h>
-#include <lithostress/geometry/quarter_annulus.h>
-#include <lithostress/geometry/rectangular_geometries.h>
-#include <lithostress/geometry/subduction_zone.h>
 
 namespace lithostress
 {
@@ -15,11 +10,9 @@ namespace lithostress
     prm.enter_subsection("Geometry");
     prm.declare_entry("Model",
                       "rectangular block",
-                      Patterns::Selection(
-                        "rectangular block|cantilever beam|"
-                        "thin plate|layered box|quarter "
-                        "annulus|L-shaped domain|subduction zone|gmsh"),
-                      "The geometry: a built-in generator or a Gmsh mesh.");
+                      Patterns::Selection(GeometryRegistry<dim>::names()),
+                      "The geometry: a built-in generator or a Gmsh mesh. " +
+                        GeometryRegistry<dim>::documentation() + ".");
     prm.declare_entry("Length unit",
                       "m",
                       Patterns::Selection("m|km"),
@@ -34,14 +27,7 @@ namespace lithostress
                       "working directory, coordinates in the Length unit) "
                       "for Geometry/Model = gmsh to read back, e.g. to edit a "
                       "generated section in Gmsh; empty = no file.");
-    RectangularBlock<dim>::declare_parameters(prm);
-    CantileverBeam<dim>::declare_parameters(prm);
-    ThinPlate<dim>::declare_parameters(prm);
-    LayeredBox<dim>::declare_parameters(prm);
-    QuarterAnnulus<dim>::declare_parameters(prm);
-    LShapedDomain<dim>::declare_parameters(prm);
-    SubductionZone<dim>::declare_parameters(prm);
-    GmshMesh<dim>::declare_parameters(prm);
+    GeometryRegistry<dim>::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -72,25 +58,8 @@ namespace lithostress
     const double scale = length_scale(prm);
     prm.enter_subsection("Geometry");
     const std::string                   name = prm.get("Model");
-    std::unique_ptr<GeometryModel<dim>> model;
-    if (name == "rectangular block")
-      model = std::make_unique<RectangularBlock<dim>>();
-    else if (name == "cantilever beam")
-      model = std::make_unique<CantileverBeam<dim>>();
-    else if (name == "thin plate")
-      model = std::make_unique<ThinPlate<dim>>();
-    else if (name == "layered box")
-      model = std::make_unique<LayeredBox<dim>>();
-    else if (name == "quarter annulus")
-      model = std::make_unique<QuarterAnnulus<dim>>();
-    else if (name == "L-shaped domain")
-      model = std::make_unique<LShapedDomain<dim>>();
-    else if (name == "subduction zone")
-      model = std::make_unique<SubductionZone<dim>>();
-    else if (name == "gmsh")
-      model = std::make_unique<GmshMesh<dim>>();
-    else
-      throw_input_error("Geometry/Model", "<" + name + "> is not implemented");
+    std::unique_ptr<GeometryModel<dim>> model =
+      GeometryRegistry<dim>::find(name, "Geometry/Model").create();
     model->parse_parameters(prm, scale);
     prm.leave_subsection();
     return model;

@@ -953,4 +953,9 @@ namespace lithostress
   }
 
   template class GmshMesh<2>;
+
+  LITHOSTRESS_REGISTER_GEOMETRY(
+    GmshMesh,
+    "gmsh",
+    "a Gmsh mesh with physical groups as parts, regions and faults")
 } // namespace lithostress

@@ -56,4 +56,8 @@ namespace lithostress
   }
 
   template class LShapedDomain<2>;
+
+  LITHOSTRESS_REGISTER_GEOMETRY(LShapedDomain,
+                                "L-shaped domain",
+                                "the L-shaped domain with a re-entrant corner")
 } // namespace lithostress

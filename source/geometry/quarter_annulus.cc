@@ -137,4 +137,10 @@ namespace lithostress
   }
 
   template class QuarterAnnulus<2>;
+
+  LITHOSTRESS_REGISTER_GEOMETRY(
+    QuarterAnnulus,
+    "quarter annulus",
+    "a quarter of a thick-walled cylinder, optionally in a shell (thesis "
+    "§4.5)")
 } // namespace lithostress

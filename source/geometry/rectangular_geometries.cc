@@ -787,4 +787,19 @@ namespace lithostress
   template class CantileverBeam<2>;
   template class ThinPlate<2>;
   template class LayeredBox<2>;
+
+  LITHOSTRESS_REGISTER_GEOMETRY(RectangularBlock,
+                                "rectangular block",
+                                "a block of one material (thesis §4.4)")
+  LITHOSTRESS_REGISTER_GEOMETRY(CantileverBeam,
+                                "cantilever beam",
+                                "the cantilever of thesis §4.3")
+  LITHOSTRESS_REGISTER_GEOMETRY(ThinPlate,
+                                "thin plate",
+                                "a long thin plate (thesis §6.1.2)")
+  LITHOSTRESS_REGISTER_GEOMETRY(
+    LayeredBox,
+    "layered box",
+    "horizontal layers, optionally cut by planar or listric faults "
+    "(thesis chapters 6 and 7)")
 } // namespace lithostress

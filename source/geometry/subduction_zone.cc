@@ -594,4 +594,8 @@ namespace lithostress
   }
 
   template class SubductionZone<2>;
+
+  LITHOSTRESS_REGISTER_GEOMETRY(SubductionZone,
+                                "subduction zone",
+                                "the subduction zone of thesis chapter 7")
 } // namespace lithostress

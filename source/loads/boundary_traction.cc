@@ -1,6 +1,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/loads/boundary_traction.h>
+#include <lithostress/loads/load_collection.h>
 #include <lithostress/reference_solutions/reference_solution.h>
 
 #include <deal.II/base/mpi.h>
@@ -67,8 +68,8 @@ namespace lithostress
 
   template <int dim>
   void
-  BoundaryTraction<dim>::parse_parameters(ParameterHandler            &prm,
-                                          const ModelDescription<dim> &model)
+  BoundaryTraction<dim>::read_parameters(ParameterHandler            &prm,
+                                         const ModelDescription<dim> &model)
   {
     parts.clear();
     reference = model.reference;
@@ -234,4 +235,8 @@ namespace lithostress
   }
 
   template class BoundaryTraction<2>;
+  LITHOSTRESS_REGISTER_LOAD(BoundaryTraction,
+                            "boundary traction",
+                            "normal and shear tractions on boundary parts",
+                            40)
 } // namespace lithostress

@@ -1,6 +1,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/loads/density_stripping.h>
+#include <lithostress/loads/load_collection.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
@@ -14,7 +15,8 @@ namespace lithostress
 {
   template <int dim>
   void
-  DensityStripping<dim>::declare_parameters(ParameterHandler &prm)
+  DensityStripping<dim>::declare_parameters(ParameterHandler &prm,
+                                            ParameterHandler *)
   {
     prm.enter_subsection("Density stripping");
     prm.declare_entry(
@@ -218,4 +220,9 @@ namespace lithostress
   }
 
   template class DensityStripping<2>;
+  LITHOSTRESS_REGISTER_LOAD(
+    DensityStripping,
+    "density stripping",
+    "the body force of the densities less a reference column (thesis §3.7)",
+    20)
 } // namespace lithostress

@@ -1,10 +1,11 @@
 #include <lithostress/loads/gravity.h>
+#include <lithostress/loads/load_collection.h>
 
 namespace lithostress
 {
   template <int dim>
   void
-  Gravity<dim>::declare_parameters(ParameterHandler &prm)
+  Gravity<dim>::declare_parameters(ParameterHandler &prm, ParameterHandler *)
   {
     prm.enter_subsection("Gravity");
     prm.declare_entry("Enabled",
@@ -54,4 +55,8 @@ namespace lithostress
   }
 
   template class Gravity<2>;
+  LITHOSTRESS_REGISTER_LOAD(Gravity,
+                            "gravity",
+                            "the body force ρ g (thesis §3.7)",
+                            10)
 } // namespace lithostress

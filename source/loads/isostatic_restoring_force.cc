@@ -1,12 +1,14 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/loads/isostatic_restoring_force.h>
+#include <lithostress/loads/load_collection.h>
 
 namespace lithostress
 {
   template <int dim>
   void
-  IsostaticRestoringForce<dim>::declare_parameters(ParameterHandler &prm)
+  IsostaticRestoringForce<dim>::declare_parameters(ParameterHandler &prm,
+                                                   ParameterHandler *)
   {
     prm.enter_subsection("Isostatic restoring force");
     prm.declare_entry("Boundary parts",
@@ -24,7 +26,7 @@ namespace lithostress
 
   template <int dim>
   void
-  IsostaticRestoringForce<dim>::parse_parameters(
+  IsostaticRestoringForce<dim>::read_parameters(
     ParameterHandler            &prm,
     const ModelDescription<dim> &model)
   {
@@ -100,4 +102,9 @@ namespace lithostress
   }
 
   template class IsostaticRestoringForce<2>;
+  LITHOSTRESS_REGISTER_LOAD(
+    IsostaticRestoringForce,
+    "isostatic restoring force",
+    "a Winkler foundation of a fluid on boundary parts (ISOS)",
+    50)
 } // namespace lithostress

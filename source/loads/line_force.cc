@@ -3,6 +3,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/loads/line_force.h>
+#include <lithostress/loads/load_collection.h>
 
 #include <sstream>
 
@@ -10,7 +11,7 @@ namespace lithostress
 {
   template <int dim>
   void
-  LineForce<dim>::declare_parameters(ParameterHandler &prm)
+  LineForce<dim>::declare_parameters(ParameterHandler &prm, ParameterHandler *)
   {
     prm.enter_subsection("Line forces");
     prm.declare_entry("Points",
@@ -28,8 +29,8 @@ namespace lithostress
 
   template <int dim>
   void
-  LineForce<dim>::parse_parameters(ParameterHandler            &prm,
-                                   const ModelDescription<dim> &model)
+  LineForce<dim>::read_parameters(ParameterHandler            &prm,
+                                  const ModelDescription<dim> &model)
   {
     const std::string where = "Loads/Line forces/";
     prm.enter_subsection("Line forces");
@@ -121,4 +122,5 @@ namespace lithostress
   }
 
   template class LineForce<2>;
+  LITHOSTRESS_REGISTER_LOAD(LineForce, "line force", "forces at points", 60)
 } // namespace lithostress

@@ -1,6 +1,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/loads/boundary_traction.h>
+#include <lithostress/loads/load_collection.h>
 #include <lithostress/loads/slab_pull.h>
 
 #include <cmath>
@@ -10,7 +11,7 @@ namespace lithostress
 {
   template <int dim>
   void
-  SlabPull<dim>::declare_parameters(ParameterHandler &prm)
+  SlabPull<dim>::declare_parameters(ParameterHandler &prm, ParameterHandler *)
   {
     prm.enter_subsection("Slab pull");
     prm.declare_entry("Enabled",
@@ -163,4 +164,9 @@ namespace lithostress
   }
 
   template class SlabPull<2>;
+  LITHOSTRESS_REGISTER_LOAD(
+    SlabPull,
+    "slab pull",
+    "a resultant pull spread over a boundary part (thesis §7.4)",
+    70)
 } // namespace lithostress

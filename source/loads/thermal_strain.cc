@@ -1,4 +1,5 @@
 #include <lithostress/base/input_error.h>
+#include <lithostress/loads/load_collection.h>
 #include <lithostress/loads/thermal_strain.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -12,7 +13,8 @@ namespace lithostress
 {
   template <int dim>
   void
-  ThermalStrain<dim>::declare_parameters(ParameterHandler &prm)
+  ThermalStrain<dim>::declare_parameters(ParameterHandler &prm,
+                                         ParameterHandler *)
   {
     prm.enter_subsection("Thermal strain");
     prm.declare_entry("Temperature change",
@@ -43,7 +45,8 @@ namespace lithostress
 
   template <int dim>
   bool
-  ThermalStrain<dim>::parse_parameters(ParameterHandler &prm)
+  ThermalStrain<dim>::parse_parameters(ParameterHandler &prm,
+                                       const ModelDescription<dim> &)
   {
     const std::string where = "Loads/Thermal strain/";
     prm.enter_subsection("Thermal strain");
@@ -149,4 +152,9 @@ namespace lithostress
   }
 
   template class ThermalStrain<2>;
+  LITHOSTRESS_REGISTER_LOAD(
+    ThermalStrain,
+    "thermal strain",
+    "the initial strain of a temperature change (thesis §3.8, TANOM)",
+    30)
 } // namespace lithostress

@@ -71,6 +71,14 @@ namespace lithostress
   SymmetricTensor<2, 3>
   CreepStrain<dim>::tensor(const Vector<double> &c)
   {
+    return tensor(make_array_view(c));
+  }
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  CreepStrain<dim>::tensor(const ArrayView<const double> &c)
+  {
+    AssertDimension(c.size(), n_components);
     SymmetricTensor<2, 3> t;
     if constexpr (dim == 2)
       {
@@ -97,6 +105,15 @@ namespace lithostress
                                Vector<double>              &c)
   {
     c.reinit(n_components);
+    components(t, make_array_view(c));
+  }
+
+  template <int dim>
+  void
+  CreepStrain<dim>::components(const SymmetricTensor<2, 3> &t,
+                               const ArrayView<double>     &c)
+  {
+    AssertDimension(c.size(), n_components);
     if constexpr (dim == 2)
       {
         c[0] = t[0][0];

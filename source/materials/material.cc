@@ -1,6 +1,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/materials/material.h>
+#include <lithostress/materials/rheology.h>
 
 namespace lithostress
 {
@@ -59,6 +60,14 @@ namespace lithostress
                           "0",
                           Patterns::Double(),
                           "Maxwell viscosity eta [Pa s]; 0 = purely elastic.");
+        prm.declare_entry(
+          "Rheology",
+          "automatic",
+          Patterns::Selection("automatic|" + RheologyRegistry<2>::names()),
+          "The rock law: " + RheologyRegistry<2>::documentation() +
+            "; automatic: maxwell if a Viscosity is given, "
+            "elastic otherwise.");
+        RheologyRegistry<2>::declare_parameters(prm);
         prm.leave_subsection();
       }
     prm.leave_subsection();
@@ -84,6 +93,7 @@ namespace lithostress
         m.density            = prm.get_double("Density");
         m.tensile_strength   = prm.get_double("Tensile strength");
         m.viscosity          = prm.get_double("Viscosity");
+        m.rheology           = prm.get("Rheology");
         const std::string id = Utilities::trim(prm.get("Material id"));
         prm.leave_subsection();
 
@@ -101,6 +111,12 @@ namespace lithostress
           throw_input_error(where + "Tensile strength", "must not be negative");
         if (m.viscosity < 0)
           throw_input_error(where + "Viscosity", "must not be negative");
+        if (m.rheology == "automatic")
+          m.rheology = m.viscosity > 0 ? "maxwell" : "elastic";
+        else if (m.rheology == "elastic" && m.viscosity > 0)
+          throw_input_error(where + "Viscosity",
+                            "is given, but Rheology = elastic does not "
+                            "creep: remove the viscosity or choose maxwell");
         if (id.empty())
           {
             m.id = numbers::invalid_material_id;

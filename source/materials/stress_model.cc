@@ -1,24 +1,50 @@
 #include <lithostress/materials/stress_model.h>
 
+#include <array>
+
 namespace lithostress
 {
   template <int dim>
   StressModel<dim>::StressModel(
+    ParameterHandler                                    &prm,
     const MaterialLibrary                               &materials,
     const PlaneState                                     plane_state,
     const std::vector<const InitialStressSource<dim> *> &sources)
       : materials(materials)
       , plane_state(plane_state)
   {
+    prm.enter_subsection("Materials");
     for (const Material &m : materials.materials())
       {
-        moduli_of.emplace(m.id, ElasticModuli<dim>(m, plane_state));
-        maxwell_of.emplace(m.id, MaxwellMaterial<dim>(m, plane_state));
+        std::unique_ptr<Rheology<dim>> law =
+          RheologyRegistry<dim>::find(m.rheology,
+                                      "Materials/" + m.name + "/Rheology")
+            .create();
+        prm.enter_subsection(m.name);
+        law->parse_parameters(prm, m, plane_state);
+        prm.leave_subsection();
+        history_size_of[m.id] = law->history_names().size();
+        rheology_of.emplace(m.id, std::move(law));
       }
-    step_moduli_of = moduli_of;
+    prm.leave_subsection();
+    for (const auto &[id, n] : history_size_of)
+      if (n > zero_history.size())
+        zero_history.resize(n, 0.0);
     for (const InitialStressSource<dim> *source : sources)
       if (source->has_initial_stress())
         initial_stress_loads.push_back(source);
+  }
+
+  template <int dim>
+  StressState<dim>
+  StressModel<dim>::initial_stress(const types::material_id  id,
+                                   const Point<dim>         &p,
+                                   const ElasticModuli<dim> &moduli) const
+  {
+    StressState<dim> s;
+    for (const InitialStressSource<dim> *load : initial_stress_loads)
+      load->add_initial_stress(p, materials(id), moduli, s.in_plane, s.zz);
+    return s;
   }
 
   template <int dim>
@@ -27,39 +53,15 @@ namespace lithostress
                            const Point<dim>              &p,
                            const SymmetricTensor<2, dim> &strain) const
   {
-    const ElasticModuli<dim> &m = moduli_of.at(id);
-    StressState<dim>          s;
-    s.in_plane = m.stress(strain);
-    s.zz       = m.sigma_zz(strain);
-    for (const InitialStressSource<dim> *load : initial_stress_loads)
-      load->add_initial_stress(p, materials(id), m, s.in_plane, s.zz);
-    return s;
+    const Rheology<dim> &law = *rheology_of.at(id);
+    RheologyInputs<dim>  in;
+    in.position = p;
+    in.strain   = strain;
+    in.history =
+      ArrayView<const double>(zero_history.data(), history_size_of.at(id));
+    in.initial_stress = initial_stress(id, p, law.moduli_for(in));
+    return law.stress(in);
   }
-
-  namespace
-  {
-    /** σ = C ε + (stress of the initial strain @p initial) + thermal. */
-    template <int dim>
-    StressState<dim>
-    stress_with_initial_strain(
-      const ElasticModuli<dim>                            &m,
-      const Material                                      &material,
-      const std::vector<const InitialStressSource<dim> *> &loads,
-      const Point<dim>                                    &p,
-      const SymmetricTensor<2, dim>                       &strain,
-      const SymmetricTensor<2, 3>                         &initial)
-    {
-      StressState<dim> s;
-      s.in_plane             = m.stress(strain);
-      s.zz                   = m.sigma_zz(strain);
-      const auto [sigma, zz] = m.initial_strain_stress(initial);
-      s.in_plane += sigma;
-      s.zz += zz;
-      for (const InitialStressSource<dim> *load : loads)
-        load->add_initial_stress(p, material, m, s.in_plane, s.zz);
-      return s;
-    }
-  } // namespace
 
   template <int dim>
   StressState<dim>
@@ -68,8 +70,15 @@ namespace lithostress
                            const SymmetricTensor<2, dim> &strain,
                            const SymmetricTensor<2, 3>   &creep) const
   {
-    return stress_with_initial_strain(
-      moduli_of.at(id), materials(id), initial_stress_loads, p, strain, creep);
+    std::array<double, CreepStrain<dim>::n_components> c;
+    CreepStrain<dim>::components(creep, ArrayView<double>(c.data(), c.size()));
+    const Rheology<dim> &law = *rheology_of.at(id);
+    RheologyInputs<dim>  in;
+    in.position       = p;
+    in.strain         = strain;
+    in.history        = ArrayView<const double>(c.data(), c.size());
+    in.initial_stress = initial_stress(id, p, law.moduli_for(in));
+    return law.stress(in);
   }
 
   template <int dim>
@@ -81,7 +90,7 @@ namespace lithostress
     const SymmetricTensor<2, dim>                           &strain) const
   {
     if (creep_strain == nullptr ||
-        !maxwell_of.at(cell->material_id()).is_viscous())
+        !rheology_of.at(cell->material_id())->creeps())
       return stress(cell->material_id(), p, strain);
     return stress(cell->material_id(),
                   p,
@@ -90,26 +99,22 @@ namespace lithostress
   }
 
   template <int dim>
-  StressState<dim>
-  StressModel<dim>::step_stress(const types::material_id       id,
-                                const Point<dim>              &p,
-                                const SymmetricTensor<2, dim> &strain,
-                                const SymmetricTensor<2, 3>   &history) const
+  void
+  StressModel<dim>::evaluate(const types::material_id id,
+                             RheologyInputs<dim>     &in,
+                             RheologyOutputs<dim>    &out) const
   {
-    return stress_with_initial_strain(step_moduli_of.at(id),
-                                      materials(id),
-                                      initial_stress_loads,
-                                      p,
-                                      strain,
-                                      history);
+    const Rheology<dim> &law = *rheology_of.at(id);
+    in.initial_stress = initial_stress(id, in.position, law.moduli_for(in));
+    law.evaluate(in, out);
   }
 
   template <int dim>
   bool
   StressModel<dim>::has_viscous_material() const
   {
-    for (const auto &[id, law] : maxwell_of)
-      if (law.is_viscous())
+    for (const auto &[id, law] : rheology_of)
+      if (law->creeps())
         return true;
     return false;
   }
@@ -123,11 +128,8 @@ namespace lithostress
     ++version;
     step_length = dt;
     step_theta  = theta;
-    step_moduli_of.clear();
-    for (const auto &[id, law] : maxwell_of)
-      step_moduli_of.emplace(id,
-                             law.is_viscous() ? law.step_moduli(dt, theta)
-                                              : moduli_of.at(id));
+    for (const auto &[id, law] : rheology_of)
+      law->set_time_step(dt, theta);
   }
 
   template class StressModel<2>;

@@ -98,7 +98,7 @@ namespace lithostress
           {
             if (cell->is_locally_owned())
               maxwell_time(cell_index) =
-                stress_model.maxwell(cell->material_id()).maxwell_time();
+                stress_model.rheology(cell->material_id()).relaxation_time();
             ++cell_index;
           }
         data_out.add_data_vector(maxwell_time, "maxwell_time");

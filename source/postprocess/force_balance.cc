@@ -186,8 +186,7 @@ namespace lithostress
             }
           // The creep strain's share of the internal force ∫ ε(v) : σ.
           const CreepStrain<dim> *creep = stress_model.attached_creep_strain();
-          if (creep != nullptr &&
-              stress_model.maxwell(material.id).is_viscous())
+          if (creep != nullptr && stress_model.rheology(material.id).creeps())
             {
               creep->get(cell, creep_values);
               load_rhs.reinit(n);

@@ -85,7 +85,7 @@ namespace lithostress
         // The creep strain lives on the unit cell: locate the point there.
         const bool with_creep =
           stress_model.attached_creep_strain() != nullptr &&
-          stress_model.maxwell(material.id).is_viscous();
+          stress_model.rheology(material.id).creeps();
         const StressState<dim> s =
           with_creep
             ? stress_model.stress(cell,

@@ -18,4 +18,9 @@ namespace lithostress
   }
 
   template class ConvergenceTableReport<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(
+    ConvergenceTableReport,
+    "convergence table",
+    "the convergence table with rates (convergence.csv)",
+    10)
 } // namespace lithostress

@@ -36,4 +36,8 @@ namespace lithostress
   }
 
   template class ErrorNormsReport<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(ErrorNormsReport,
+                                     "error norms",
+                                     "the error against the reference solution",
+                                     20)
 } // namespace lithostress

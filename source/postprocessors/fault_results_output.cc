@@ -96,4 +96,8 @@ namespace lithostress
   }
 
   template class FaultResultsOutput<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(FaultResultsOutput,
+                                     "fault results",
+                                     "slip and tractions along the faults",
+                                     90)
 } // namespace lithostress

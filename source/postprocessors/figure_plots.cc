@@ -21,4 +21,8 @@ namespace lithostress
   }
 
   template class FigurePlots<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(FigurePlots,
+                                     "figures",
+                                     "the figure data and PNG figures",
+                                     100)
 } // namespace lithostress

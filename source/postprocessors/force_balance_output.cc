@@ -51,4 +51,9 @@ namespace lithostress
   }
 
   template class ForceBalanceOutput<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(
+    ForceBalanceOutput,
+    "force balance",
+    "reactions against loads (force_balance.csv)",
+    60)
 } // namespace lithostress

@@ -80,4 +80,9 @@ namespace lithostress
   }
 
   template class ParaviewOutput<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(
+    ParaviewOutput,
+    "paraview",
+    "ParaView files of the solution and stress",
+    50)
 } // namespace lithostress

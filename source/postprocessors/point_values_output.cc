@@ -142,4 +142,9 @@ namespace lithostress
   }
 
   template class PointValuesOutput<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(
+    PointValuesOutput,
+    "point values",
+    "values at report points (point_values.csv)",
+    30)
 } // namespace lithostress

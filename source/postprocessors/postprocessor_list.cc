@@ -1,42 +1,12 @@
-#include <lithostress/postprocessors/convergence_table.h>
-#include <lithostress/postprocessors/error_norms_report.h>
-#include <lithostress/postprocessors/fault_results_output.h>
-#include <lithostress/postprocessors/figure_plots.h>
-#include <lithostress/postprocessors/force_balance_output.h>
-#include <lithostress/postprocessors/paraview_output.h>
-#include <lithostress/postprocessors/point_values_output.h>
-#include <lithostress/postprocessors/run_statistics.h>
-#include <lithostress/postprocessors/stress_depth_output.h>
-#include <lithostress/postprocessors/surface_profile_output.h>
-#include <lithostress/postprocessors/thin_plate_output.h>
+#include <lithostress/postprocessors/postprocessor.h>
 
 namespace lithostress
 {
   template <int dim>
-  std::vector<typename PostprocessorList<dim>::Entry>
-  PostprocessorList<dim>::registered()
-  {
-    // The calling order: the convergence table's columns and the log's
-    // lines come out in this order.
-    return {entry<ConvergenceTableReport<dim>>(),
-            entry<ErrorNormsReport<dim>>(),
-            entry<PointValuesOutput<dim>>(),
-            entry<SurfaceProfileOutput<dim>>(),
-            entry<ParaviewOutput<dim>>(),
-            entry<ForceBalanceOutput<dim>>(),
-            entry<StressDepthOutput<dim>>(),
-            entry<ThinPlateOutput<dim>>(),
-            entry<FaultResultsOutput<dim>>(),
-            entry<FigurePlots<dim>>(),
-            entry<RunStatistics<dim>>()};
-  }
-
-  template <int dim>
   void
   PostprocessorList<dim>::declare_parameters(ParameterHandler &prm)
   {
-    for (const Entry &e : registered())
-      e.declare(prm);
+    PostprocessorRegistry<dim>::declare_parameters(prm);
   }
 
   template <int dim>
@@ -45,9 +15,9 @@ namespace lithostress
                                            const SimulatorAccess<dim> &access)
   {
     postprocessors.clear();
-    for (const Entry &e : registered())
+    for (const auto &plugin : PostprocessorRegistry<dim>::plugins())
       {
-        postprocessors.push_back(e.create());
+        postprocessors.push_back(plugin.create());
         postprocessors.back()->parse_parameters(prm, access);
       }
   }

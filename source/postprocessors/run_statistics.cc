@@ -79,6 +79,10 @@ namespace lithostress
   }
 
   template class RunStatistics<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(RunStatistics,
+                                     "run statistics",
+                                     "solver phases and statistics.json",
+                                     110)
   template void
   write_statistics(const SimulatorAccess<2> &);
 } // namespace lithostress

@@ -44,4 +44,9 @@ namespace lithostress
   }
 
   template class StressDepthOutput<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(
+    StressDepthOutput,
+    "stress-depth profiles",
+    "stress against depth along vertical lines",
+    70)
 } // namespace lithostress

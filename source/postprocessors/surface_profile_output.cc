@@ -57,6 +57,10 @@ namespace lithostress
   }
 
   template class SurfaceProfileOutput<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(SurfaceProfileOutput,
+                                     "surface profile",
+                                     "the displacement along the top surface",
+                                     40)
   template types::boundary_id
   surface_boundary(ParameterHandler &, const SimulatorAccess<2> &);
 } // namespace lithostress

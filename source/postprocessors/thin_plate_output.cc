@@ -56,4 +56,8 @@ namespace lithostress
   }
 
   template class ThinPlateOutput<2>;
+  LITHOSTRESS_REGISTER_POSTPROCESSOR(ThinPlateOutput,
+                                     "thin-plate comparison",
+                                     "the flexure against thin-plate theory",
+                                     80)
 } // namespace lithostress

@@ -95,8 +95,8 @@ namespace lithostress
                  stress_model.moduli(other).stiffness())
                     .norm() <=
                   1e-12 * stress_model.moduli(id).stiffness().norm() &&
-                stress_model.maxwell(id).maxwell_time() ==
-                  stress_model.maxwell(other).maxwell_time())
+                stress_model.rheology(id).relaxation_time() ==
+                  stress_model.rheology(other).relaxation_time())
               same = std::min(same, index);
           groups.law.emplace(id, same);
         }

@@ -222,7 +222,8 @@ namespace lithostress
     std::vector<const InitialStressSource<dim> *> initial_stresses;
     for (const auto &load : loads.loads())
       initial_stresses.push_back(load.get());
-    stress_model = std::make_unique<StressModel<dim>>(materials,
+    stress_model = std::make_unique<StressModel<dim>>(prm,
+                                                      materials,
                                                       plane_state,
                                                       initial_stresses);
     prescribed_displacement.parse_parameters(prm, model);

@@ -232,9 +232,10 @@ namespace lithostress
 
     double shortest_maxwell_time = std::numeric_limits<double>::infinity();
     for (const Material &m : parts.access.materials.materials())
-      if (model.maxwell(m.id).is_viscous())
+      if (model.rheology(m.id).creeps())
         shortest_maxwell_time =
-          std::min(shortest_maxwell_time, model.maxwell(m.id).maxwell_time());
+          std::min(shortest_maxwell_time,
+                   model.rheology(m.id).relaxation_time());
     dt = settings.first_step > 0
            ? settings.first_step
            : (std::isfinite(shortest_maxwell_time)

@@ -102,7 +102,46 @@ namespace lithostress
     amg.initialize(matrix, parameters);
   }
 
+  template <int dim>
+  void
+  AMGSolver<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("AMG smoother",
+                      "Chebyshev",
+                      Patterns::Selection("Chebyshev|symmetric Gauss-Seidel"),
+                      "Smoother of the AMG V-cycle.");
+    prm.declare_entry("AMG smoother sweeps",
+                      "2",
+                      Patterns::Integer(1),
+                      "Smoother sweeps (Chebyshev degree) in the V-cycle.");
+    prm.declare_entry("AMG aggregation threshold",
+                      "1e-4",
+                      Patterns::Double(0, 1),
+                      "ML aggregation threshold (strength of connection).");
+  }
+
+  template <int dim>
+  std::unique_ptr<LinearSolver<dim>>
+  AMGSolver<dim>::create(ParameterHandler              &prm,
+                         const FiniteElementSpace<dim> &fe_space)
+  {
+    (void)fe_space;
+    Settings s;
+    s.relative_tolerance         = prm.get_double("Relative tolerance");
+    s.max_iterations             = prm.get_integer("Maximum iterations");
+    s.smoother_sweeps            = prm.get_integer("AMG smoother sweeps");
+    s.aggregation_threshold      = prm.get_double("AMG aggregation threshold");
+    s.smoother                   = prm.get("AMG smoother");
+    s.time_matrix_vector_product = prm.get_bool("Time matrix-vector product");
+    return std::make_unique<AMGSolver<dim>>(s);
+  }
+
   template class AMGSolver<2>;
+  LITHOSTRESS_REGISTER_LINEAR_SOLVER(
+    AMGSolver,
+    "AMG",
+    "CG with algebraic multigrid on the assembled matrix (all rigid-body "
+    "modes as near-null space)")
   template void
   initialize_elasticity_amg<2>(TrilinosWrappers::PreconditionAMG &,
                                const TrilinosWrappers::SparseMatrix &,

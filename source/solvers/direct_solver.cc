@@ -135,6 +135,33 @@ namespace lithostress
              : iterative->solve(problem, solution);
   }
 
+  template <int dim>
+  void
+  DirectSolver<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Direct solver",
+                      "Cholesky",
+                      Patterns::Selection("Cholesky|Amesos_Klu|Amesos_Mumps|"
+                                          "Amesos_Superludist"),
+                      "The direct solver's factorisation: Cholesky "
+                      "(SuiteSparse CHOLMOD, one rank, the factor kept "
+                      "across the time steps of one operator; Amesos KLU "
+                      "on several ranks or if the matrix is not positive "
+                      "definite), or a Trilinos Amesos package.");
+  }
+
+  template <int dim>
+  std::unique_ptr<LinearSolver<dim>>
+  DirectSolver<dim>::create(ParameterHandler              &prm,
+                            const FiniteElementSpace<dim> &fe_space)
+  {
+    (void)fe_space;
+    return std::make_unique<DirectSolver<dim>>(prm.get("Direct solver"));
+  }
+
   template class DirectSolver<2>;
+  LITHOSTRESS_REGISTER_LINEAR_SOLVER(DirectSolver,
+                                     "direct",
+                                     "a sparse direct solver (Direct solver)")
   template class FactorisationOrIterativeSolver<2>;
 } // namespace lithostress

@@ -1,11 +1,9 @@
 #include <deal.II/base/timer.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/solvers/amg_solver.h>
 #include <lithostress/solvers/direct_solver.h>
 #include <lithostress/solvers/linear_solver.h>
 #include <lithostress/solvers/multigrid_solver.h>
-#include <lithostress/solvers/two_field_multigrid_solver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -75,19 +73,11 @@ namespace lithostress
     prm.declare_entry(
       "Type",
       "automatic",
-      Patterns::Selection(
-        "automatic|matrix-free multigrid|two-field multigrid|AMG|direct"),
-      "matrix-free multigrid: CG with a matrix-free geometric multigrid "
-      "V-cycle (no matrix is assembled; one displacement field of degree "
-      "1-3); two-field multigrid: CG with a geometric multigrid V-cycle on "
-      "the assembled matrix, Galerkin coarse levels (faulted models whose "
-      "faults are locked or slip by a prescribed amount; a stiff normal "
-      "spring defeats its smoother); "
-      "AMG: CG with algebraic multigrid on the assembled matrix (all "
-      "rigid-body modes as near-null space); direct: a sparse direct "
-      "solver (Direct solver); automatic: the matrix-free multigrid wherever "
-      "it applies, otherwise the direct solver on one rank up to Direct "
-      "solver limit DoFs and AMG above it and on several ranks.");
+      Patterns::Selection("automatic|" + LinearSolverRegistry<dim>::names()),
+      LinearSolverRegistry<dim>::documentation() +
+        "; automatic: the matrix-free multigrid wherever it applies, "
+        "otherwise the direct solver on one rank up to Direct solver limit "
+        "DoFs and AMG above it and on several ranks.");
     prm.declare_entry("Relative tolerance",
                       "1e-10",
                       Patterns::Double(1e-16, 1),
@@ -96,73 +86,13 @@ namespace lithostress
                       "1000",
                       Patterns::Integer(1),
                       "CG iteration limit; reaching it is an error.");
-    prm.declare_entry("AMG smoother",
-                      "Chebyshev",
-                      Patterns::Selection("Chebyshev|symmetric Gauss-Seidel"),
-                      "Smoother of the AMG V-cycle.");
-    prm.declare_entry("AMG smoother sweeps",
-                      "2",
-                      Patterns::Integer(1),
-                      "Smoother sweeps (Chebyshev degree) in the V-cycle.");
-    prm.declare_entry("AMG aggregation threshold",
-                      "1e-4",
-                      Patterns::Double(0, 1),
-                      "ML aggregation threshold (strength of connection).");
-    prm.declare_entry("Multigrid smoother degree",
-                      "5",
-                      Patterns::Integer(1, 20),
-                      "Degree of the Chebyshev smoother on each level of "
-                      "the matrix-free multigrid (operator products per "
-                      "smoothing step). Type = two-field multigrid smooths "
-                      "with degree 4 and range 20; the sliding solver's "
-                      "multigrid with Faults/Sliding solver/Multigrid "
-                      "smoother degree.");
-    prm.declare_entry("Multigrid smoothing range",
-                      "20",
-                      Patterns::Double(1.5),
-                      "Ratio of the largest eigenvalue to the smallest one "
-                      "the matrix-free multigrid's Chebyshev smoother "
-                      "damps.");
-    prm.declare_entry("Multigrid level precision",
-                      "single",
-                      Patterns::Selection("single|double"),
-                      "Floating-point precision of the multigrid levels "
-                      "(the outer CG is always double precision).");
-    prm.declare_entry("Multigrid coarse solver",
-                      "direct",
-                      Patterns::Selection("direct|AMG"),
-                      "Solver of the multigrid's coarsest level (the coarse "
-                      "mesh): a sparse direct factorisation (Amesos KLU), or "
-                      "CG with AMG to a relative residual of 1e-8 in every "
-                      "V-cycle, for coarse meshes too large to factorise "
-                      "(tens of thousands of cells).");
-    prm.declare_entry("Multigrid hierarchy",
-                      "local smoothing",
-                      Patterns::Selection("local smoothing|global coarsening"),
-                      "Levels of the multigrid: the levels of the refined "
-                      "mesh's cell hierarchy, smoothed only where they are "
-                      "refined (local smoothing, with edge terms at "
-                      "refinement edges), or a sequence of meshes each "
-                      "coarsened once globally from the one above (global "
-                      "coarsening: every level covers the whole domain, "
-                      "hanging nodes on the levels). The same answer to the "
-                      "solver tolerance; see doc/performance.md for when "
-                      "each is faster.");
     prm.declare_entry("Time matrix-vector product",
                       "false",
                       Patterns::Bool(),
                       "Measure one product with the stiffness matrix (or "
                       "the matrix-free operator) after the solve and report "
                       "it in statistics.json (bench).");
-    prm.declare_entry("Direct solver",
-                      "Cholesky",
-                      Patterns::Selection("Cholesky|Amesos_Klu|Amesos_Mumps|"
-                                          "Amesos_Superludist"),
-                      "The direct solver's factorisation: Cholesky "
-                      "(SuiteSparse CHOLMOD, one rank, the factor kept "
-                      "across the time steps of one operator; Amesos KLU "
-                      "on several ranks or if the matrix is not positive "
-                      "definite), or a Trilinos Amesos package.");
+    LinearSolverRegistry<dim>::declare_parameters(prm);
     prm.declare_entry("Direct solver limit",
                       "2e6",
                       Patterns::Double(0),
@@ -216,51 +146,14 @@ namespace lithostress
     if (automatic)
       type = multigrid_applies ? "matrix-free multigrid" : "AMG";
 
-    std::unique_ptr<LinearSolver<dim>> solver;
-    if (type == "matrix-free multigrid")
-      {
-        typename MatrixFreeMultigridSolver<dim>::Settings s;
-        s.relative_tolerance = prm.get_double("Relative tolerance");
-        s.max_iterations     = prm.get_integer("Maximum iterations");
-        s.smoother_degree    = prm.get_integer("Multigrid smoother degree");
-        s.smoothing_range    = prm.get_double("Multigrid smoothing range");
-        s.single_precision_levels =
-          prm.get("Multigrid level precision") == "single";
-        s.coarse_solver_amg = prm.get("Multigrid coarse solver") == "AMG";
-        s.global_coarsening =
-          prm.get("Multigrid hierarchy") == "global coarsening";
-        s.time_matrix_vector_product =
-          prm.get_bool("Time matrix-vector product");
-        solver =
-          std::make_unique<MatrixFreeMultigridSolver<dim>>(s,
-                                                           fe_space.degree());
-      }
-    else if (type == "two-field multigrid")
-      {
-        typename TwoFieldMultigridSolver<dim>::Settings s;
-        s.relative_tolerance = prm.get_double("Relative tolerance");
-        s.max_iterations     = prm.get_integer("Maximum iterations");
-        solver = std::make_unique<TwoFieldMultigridSolver<dim>>(s);
-      }
-    else if (type == "AMG")
-      {
-        typename AMGSolver<dim>::Settings s;
-        s.relative_tolerance    = prm.get_double("Relative tolerance");
-        s.max_iterations        = prm.get_integer("Maximum iterations");
-        s.smoother_sweeps       = prm.get_integer("AMG smoother sweeps");
-        s.aggregation_threshold = prm.get_double("AMG aggregation threshold");
-        s.smoother              = prm.get("AMG smoother");
-        s.time_matrix_vector_product =
-          prm.get_bool("Time matrix-vector product");
-        solver = std::make_unique<AMGSolver<dim>>(s);
-        if (automatic)
-          solver = std::make_unique<FactorisationOrIterativeSolver<dim>>(
-            std::make_unique<DirectSolver<dim>>(prm.get("Direct solver")),
-            std::move(solver),
-            prm.get_double("Direct solver limit"));
-      }
-    else
-      solver = std::make_unique<DirectSolver<dim>>(prm.get("Direct solver"));
+    std::unique_ptr<LinearSolver<dim>> solver =
+      LinearSolverRegistry<dim>::find(type, "Solver/Type")
+        .create(prm, fe_space);
+    if (automatic && type == "AMG")
+      solver = std::make_unique<FactorisationOrIterativeSolver<dim>>(
+        DirectSolver<dim>::create(prm, fe_space),
+        std::move(solver),
+        prm.get_double("Direct solver limit"));
     prm.leave_subsection();
     return solver;
   }

@@ -435,5 +435,76 @@ namespace lithostress
     return implementation->solve(problem, solution, settings);
   }
 
+  template <int dim>
+  void
+  MatrixFreeMultigridSolver<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Multigrid smoother degree",
+                      "5",
+                      Patterns::Integer(1, 20),
+                      "Degree of the Chebyshev smoother on each level of "
+                      "the matrix-free multigrid (operator products per "
+                      "smoothing step). Type = two-field multigrid smooths "
+                      "with degree 4 and range 20; the sliding solver's "
+                      "multigrid with Faults/Sliding solver/Multigrid "
+                      "smoother degree.");
+    prm.declare_entry("Multigrid smoothing range",
+                      "20",
+                      Patterns::Double(1.5),
+                      "Ratio of the largest eigenvalue to the smallest one "
+                      "the matrix-free multigrid's Chebyshev smoother "
+                      "damps.");
+    prm.declare_entry("Multigrid level precision",
+                      "single",
+                      Patterns::Selection("single|double"),
+                      "Floating-point precision of the multigrid levels "
+                      "(the outer CG is always double precision).");
+    prm.declare_entry("Multigrid coarse solver",
+                      "direct",
+                      Patterns::Selection("direct|AMG"),
+                      "Solver of the multigrid's coarsest level (the coarse "
+                      "mesh): a sparse direct factorisation (Amesos KLU), or "
+                      "CG with AMG to a relative residual of 1e-8 in every "
+                      "V-cycle, for coarse meshes too large to factorise "
+                      "(tens of thousands of cells).");
+    prm.declare_entry("Multigrid hierarchy",
+                      "local smoothing",
+                      Patterns::Selection("local smoothing|global coarsening"),
+                      "Levels of the multigrid: the levels of the refined "
+                      "mesh's cell hierarchy, smoothed only where they are "
+                      "refined (local smoothing, with edge terms at "
+                      "refinement edges), or a sequence of meshes each "
+                      "coarsened once globally from the one above (global "
+                      "coarsening: every level covers the whole domain, "
+                      "hanging nodes on the levels). The same answer to the "
+                      "solver tolerance; see doc/performance.md for when "
+                      "each is faster.");
+  }
+
+  template <int dim>
+  std::unique_ptr<LinearSolver<dim>>
+  MatrixFreeMultigridSolver<dim>::create(
+    ParameterHandler              &prm,
+    const FiniteElementSpace<dim> &fe_space)
+  {
+    Settings s;
+    s.relative_tolerance = prm.get_double("Relative tolerance");
+    s.max_iterations     = prm.get_integer("Maximum iterations");
+    s.smoother_degree    = prm.get_integer("Multigrid smoother degree");
+    s.smoothing_range    = prm.get_double("Multigrid smoothing range");
+    s.single_precision_levels =
+      prm.get("Multigrid level precision") == "single";
+    s.coarse_solver_amg = prm.get("Multigrid coarse solver") == "AMG";
+    s.global_coarsening = prm.get("Multigrid hierarchy") == "global coarsening";
+    s.time_matrix_vector_product = prm.get_bool("Time matrix-vector product");
+    return std::make_unique<MatrixFreeMultigridSolver<dim>>(s,
+                                                            fe_space.degree());
+  }
+
   template class MatrixFreeMultigridSolver<2>;
+  LITHOSTRESS_REGISTER_LINEAR_SOLVER(
+    MatrixFreeMultigridSolver,
+    "matrix-free multigrid",
+    "CG with a matrix-free geometric multigrid V-cycle (no matrix is "
+    "assembled; one displacement field of degree 1-3)")
 } // namespace lithostress

@@ -65,5 +65,29 @@ namespace lithostress
     return report;
   }
 
+  template <int dim>
+  void
+  TwoFieldMultigridSolver<dim>::declare_parameters(ParameterHandler &)
+  {
+  }
+
+  template <int dim>
+  std::unique_ptr<LinearSolver<dim>>
+  TwoFieldMultigridSolver<dim>::create(ParameterHandler              &prm,
+                                       const FiniteElementSpace<dim> &fe_space)
+  {
+    (void)fe_space;
+    Settings s;
+    s.relative_tolerance = prm.get_double("Relative tolerance");
+    s.max_iterations     = prm.get_integer("Maximum iterations");
+    return std::make_unique<TwoFieldMultigridSolver<dim>>(s);
+  }
+
   template class TwoFieldMultigridSolver<2>;
+  LITHOSTRESS_REGISTER_LINEAR_SOLVER(
+    TwoFieldMultigridSolver,
+    "two-field multigrid",
+    "CG with a geometric multigrid V-cycle on the assembled matrix, "
+    "Galerkin coarse levels (faulted models whose faults are locked or slip "
+    "by a prescribed amount; a stiff normal spring defeats its smoother)")
 } // namespace lithostress

@@ -72,7 +72,7 @@ namespace lithostress
     on_all_ranks(dof_handler.get_communicator(), [&]() {
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned() &&
-            stress_model.maxwell(cell->material_id()).is_viscous())
+            stress_model.rheology(cell->material_id()).creeps())
           {
             hp_fe_values.reinit(cell);
             const FEValues<dim> &fe_values =
@@ -108,21 +108,25 @@ namespace lithostress
     if (!start_rate_current)
       {
         std::vector<Vector<double>> c, rate;
+        RheologyInputs<dim>         in;
+        RheologyOutputs<dim>        out;
         for_each_viscous_cell(
           dof_handler,
           fe_space,
           stress_model,
           solution,
           [&](const auto &cell, const auto &points, const auto &strains) {
-            const types::material_id    id  = cell->material_id();
-            const MaxwellMaterial<dim> &law = stress_model.maxwell(id);
             creep.get(cell, c);
             rate.resize(c.size());
             for (unsigned int q = 0; q < c.size(); ++q)
-              CreepStrain<dim>::components(
-                law.creep_rate(tensor_3d(stress_model.stress(
-                  id, points[q], strains[q], CreepStrain<dim>::tensor(c[q])))),
-                rate[q]);
+              {
+                in.position = points[q];
+                in.strain   = strains[q];
+                in.history  = make_array_view(c[q]);
+                stress_model.evaluate(cell->material_id(), in, out);
+                rate[q] = Vector<double>(out.history_rate.begin(),
+                                         out.history_rate.end());
+              }
             start_rate.set(cell, rate);
           });
         start_rate.update_ghost_values();
@@ -161,33 +165,39 @@ namespace lithostress
     const StressModel<dim>              &stress_model,
     const TrilinosWrappers::MPI::Vector &solution)
   {
-    const double                theta = step_weight;
     Increment                   increment;
     std::vector<Vector<double>> c, h, rate;
+    RheologyInputs<dim>         in;
+    RheologyOutputs<dim>        out;
+    in.time_step = step;
+    in.weight    = step_weight;
     for_each_viscous_cell(
       dof_handler,
       fe_space,
       stress_model,
       solution,
       [&](const auto &cell, const auto &points, const auto &strains) {
-        const types::material_id    id  = cell->material_id();
-        const MaxwellMaterial<dim> &law = stress_model.maxwell(id);
+        const types::material_id id = cell->material_id();
         creep.get(cell, c);
         history.get(cell, h);
         start_rate.get(cell, rate);
         for (unsigned int q = 0; q < c.size(); ++q)
           {
-            const SymmetricTensor<2, 3> c_star = CreepStrain<dim>::tensor(h[q]);
-            const SymmetricTensor<2, 3> sigma  = tensor_3d(
-              stress_model.step_stress(id, points[q], strains[q], c_star));
-            const SymmetricTensor<2, 3> rate_end = law.creep_rate(sigma);
+            // The step's stress with the history strain c*, its creep rate
+            // and c_{n+1} = c* + w Δt ċ_{n+1}.
+            in.position = points[q];
+            in.strain   = strains[q];
+            in.history  = make_array_view(h[q]);
+            stress_model.evaluate(id, in, out);
+            const SymmetricTensor<2, 3> rate_end =
+              CreepStrain<dim>::tensor(make_array_view(out.history_rate));
             const SymmetricTensor<2, 3> c_new =
-              c_star + theta * step * rate_end;
+              CreepStrain<dim>::tensor(make_array_view(out.history));
             increment.add(CreepStrain<dim>::tensor(c[q]),
                           c_new,
                           CreepStrain<dim>::tensor(rate[q]),
                           rate_end,
-                          law.maxwell_time(),
+                          stress_model.rheology(id).relaxation_time(),
                           step,
                           bdf2_step);
             CreepStrain<dim>::components(c_new, c[q]);
@@ -212,31 +222,38 @@ namespace lithostress
   {
     double                      change = 0, largest = 0;
     std::vector<Vector<double>> c, h, rate;
+    RheologyInputs<dim>         in;
+    RheologyOutputs<dim>        out;
     for_each_viscous_cell(
       dof_handler,
       fe_space,
       stress_model,
       solution,
       [&](const auto &cell, const auto &points, const auto &strains) {
-        const types::material_id    id  = cell->material_id();
-        const MaxwellMaterial<dim> &law = stress_model.maxwell(id);
+        const types::material_id id = cell->material_id();
         creep.get(cell, c);
         history.get(cell, h);
         start_rate.get(cell, rate);
         for (unsigned int q = 0; q < c.size(); ++q)
           {
+            // The stress of the state with history h (elastic moduli) and
+            // its creep rate.
             const SymmetricTensor<2, 3> h_old = CreepStrain<dim>::tensor(h[q]);
-            const SymmetricTensor<2, 3> sigma =
-              tensor_3d(stress_model.stress(id, points[q], strains[q], h_old));
+            in.position                       = points[q];
+            in.strain                         = strains[q];
+            in.history                        = make_array_view(h[q]);
+            stress_model.evaluate(id, in, out);
+            const SymmetricTensor<2, 3> sigma = tensor_3d(out.stress);
             const SymmetricTensor<2, 3> h_new =
               CreepStrain<dim>::tensor(c[q]) +
               0.5 * step *
-                (CreepStrain<dim>::tensor(rate[q]) + law.creep_rate(sigma));
+                (CreepStrain<dim>::tensor(rate[q]) +
+                 CreepStrain<dim>::tensor(make_array_view(out.history_rate)));
             // Δs = 4η ΔΔc / Δt: the stress change behind the history's.
-            change =
-              std::max(change,
-                       (h_new - h_old).norm() * 4.0 * law.maxwell_time() *
-                         stress_model.moduli(id).mu / step);
+            change  = std::max(change,
+                              (h_new - h_old).norm() * 4.0 *
+                                stress_model.rheology(id).relaxation_time() *
+                                stress_model.moduli(id).mu / step);
             largest = std::max(largest, deviator(sigma).norm());
             CreepStrain<dim>::components(h_new, h[q]);
           }
@@ -259,13 +276,13 @@ namespace lithostress
     const auto                 &tria = creep.dof_handler().get_triangulation();
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned() &&
-          stress_model.maxwell(cell->material_id()).is_viscous())
+          stress_model.rheology(cell->material_id()).creeps())
         {
           creep.get(cell, c);
           history.get(cell, h);
           start_rate.get(cell, rate);
           const double tau =
-            stress_model.maxwell(cell->material_id()).maxwell_time();
+            stress_model.rheology(cell->material_id()).relaxation_time();
           for (unsigned int q = 0; q < c.size(); ++q)
             {
               const SymmetricTensor<2, 3> c_new =

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/tria.h>
 
+#include <lithostress/base/plugin_registry.h>
 #include <lithostress/geometry/fault_trace.h>
 
 #include <map>
@@ -75,9 +76,14 @@ namespace lithostress
     }
   };
 
+  /** The geometries: `Geometry/Model` selects one by name. */
+  template <int dim>
+  using GeometryRegistry = PluginRegistry<GeometryModel<dim>>;
+
   /**
-   * The `Geometry` section: selects one of the built-in generators or a Gmsh
-   * mesh, and the unit of the lengths given in the input.
+   * The `Geometry` section: selects one of the registered geometries (the
+   * built-in generators and the Gmsh reader), and the unit of the lengths
+   * given in the input.
    */
   template <int dim>
   class GeometrySelector
@@ -101,5 +107,23 @@ namespace lithostress
     coarse_mesh_file(ParameterHandler &prm);
   };
 } // namespace lithostress
+
+/**
+ * Register the geometry class template @p classname (a GeometryModel with a
+ * static `declare_parameters(ParameterHandler &)` that declares its
+ * subsection of `Geometry`) as `Geometry/Model = name`; one line in its
+ * source file.
+ */
+#define LITHOSTRESS_REGISTER_GEOMETRY(classname, name, description) \
+  LITHOSTRESS_REGISTER_PLUGIN(                                      \
+    ::lithostress::GeometryRegistry<2>,                             \
+    {name,                                                          \
+     description,                                                   \
+     [](ParameterHandler &prm, ParameterHandler *) {                \
+       classname<2>::declare_parameters(prm);                       \
+     },                                                             \
+     []() -> std::unique_ptr<::lithostress::GeometryModel<2>> {     \
+       return std::make_unique<classname<2>>();                     \
+     }})
 
 #endif

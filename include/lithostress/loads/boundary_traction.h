@@ -29,8 +29,14 @@ namespace lithostress
   public:
     static void
     declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
-    void
-    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+    /** Returns whether any part or point is given. */
+    bool
+    parse_parameters(ParameterHandler            &prm,
+                     const ModelDescription<dim> &model) override
+    {
+      read_parameters(prm, model);
+      return !empty();
+    }
 
     /** Whether any traction is given. */
     bool
@@ -75,6 +81,10 @@ namespace lithostress
              const Tensor<1, dim>    &n) const;
 
   private:
+    /** Read the subsection (the parts or points given). */
+    void
+    read_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+
     struct Part
     {
       types::boundary_id                     id;

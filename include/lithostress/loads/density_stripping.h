@@ -25,12 +25,25 @@ namespace lithostress
   {
   public:
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
     /** Returns whether a reference column is given. Throws InputError for a
      * column with gaps, overlaps, unsorted or empty intervals, or negative
      * densities. */
     bool
-    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+    parse_parameters(ParameterHandler            &prm,
+                     const ModelDescription<dim> &model) override;
+
+    bool
+    is_body_force() const override
+    {
+      return true;
+    }
+
+    bool
+    strips_densities() const override
+    {
+      return true;
+    }
 
     void
     add_cell_terms(const FEValues<dim>              &fe_values,

@@ -14,10 +14,17 @@ namespace lithostress
   {
   public:
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
     /** Returns whether gravity is switched on. */
     bool
-    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+    parse_parameters(ParameterHandler            &prm,
+                     const ModelDescription<dim> &model) override;
+
+    bool
+    is_body_force() const override
+    {
+      return true;
+    }
 
     void
     add_cell_terms(const FEValues<dim>              &fe_values,

@@ -20,9 +20,15 @@ namespace lithostress
   {
   public:
     static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
+    /** Returns whether any part or point is given. */
+    bool
+    parse_parameters(ParameterHandler            &prm,
+                     const ModelDescription<dim> &model) override
+    {
+      read_parameters(prm, model);
+      return !empty();
+    }
 
     bool
     empty() const
@@ -64,6 +70,10 @@ namespace lithostress
     description() const override;
 
   private:
+    /** Read the subsection (the parts or points given). */
+    void
+    read_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+
     std::vector<std::pair<types::boundary_id, double>> parts;
     std::vector<std::string>                           names;
   };

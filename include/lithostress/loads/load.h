@@ -84,6 +84,45 @@ namespace lithostress
   public:
     virtual ~Load() = default;
 
+    /** Read this load's parameters (its subsection of `Loads`); returns
+     * whether it acts on the model (false: gravity disabled, no traction
+     * parts, no line forces, ...). Throws InputError naming the entry. */
+    virtual bool
+    parse_parameters(ParameterHandler            &prm,
+                     const ModelDescription<dim> &model) = 0;
+
+    /** Whether this load is the model's body force (gravity, or its
+     * density-stripped form); a model has at most one. */
+    virtual bool
+    is_body_force() const
+    {
+      return false;
+    }
+
+    /** Whether this body force strips the densities (stresses relative to
+     * a reference column). */
+    virtual bool
+    strips_densities() const
+    {
+      return false;
+    }
+
+    /** Whether this load is set by the balance of the others' vertical
+     * forces (the slab pull's `Vertical force = balance`), so that
+     * balance() must be called on every mesh. */
+    virtual bool
+    balances_vertical_loads() const
+    {
+      return false;
+    }
+
+    /** Balance @p upthrust, the net vertical force [N/m] of the loads
+     * that do not balance (only called if balances_vertical_loads()). */
+    virtual void
+    balance(const double /*upthrust*/)
+    {
+    }
+
     /** Add this load's cell integrals for a cell of @p material. */
     virtual void
     add_cell_terms(const FEValues<dim>              &fe_values,

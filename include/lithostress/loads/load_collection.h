@@ -1,6 +1,7 @@
 #ifndef lithostress_loads_load_collection_h
 #define lithostress_loads_load_collection_h
 
+#include <lithostress/base/plugin_registry.h>
 #include <lithostress/loads/load.h>
 
 #include <map>
@@ -9,9 +10,14 @@
 
 namespace lithostress
 {
+  /** The loads, in the order they are assembled and reported. */
+  template <int dim>
+  using LoadRegistry = PluginRegistry<Load<dim>>;
+
   /**
    * The `Loads` section: every load of the model. A new load is one class
-   * derived from Load with its own parameters, declared and created here.
+   * derived from Load with its own parameters and one line,
+   * LITHOSTRESS_REGISTER_LOAD, in its source file.
    */
   template <int dim>
   class LoadCollection
@@ -76,5 +82,25 @@ namespace lithostress
     bool                                    body_force_absent = true;
   };
 } // namespace lithostress
+
+/**
+ * Register the load class template @p classname (with a static
+ * `declare_parameters(ParameterHandler &, ParameterHandler *first_pass)`
+ * for its subsection of `Loads`) under @p name, at @p position among the
+ * loads (the order of their terms and of the force balance's rows); one
+ * line in its source file.
+ */
+#define LITHOSTRESS_REGISTER_LOAD(classname, name, description, position) \
+  LITHOSTRESS_REGISTER_PLUGIN(                                            \
+    ::lithostress::LoadRegistry<2>,                                       \
+    {name,                                                                \
+     description,                                                         \
+     [](ParameterHandler &prm, ParameterHandler *first_pass) {            \
+       classname<2>::declare_parameters(prm, first_pass);                 \
+     },                                                                   \
+     []() -> std::unique_ptr<::lithostress::Load<2>> {                    \
+       return std::make_unique<classname<2>>();                           \
+     },                                                                   \
+     position})
 
 #endif

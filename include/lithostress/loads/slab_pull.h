@@ -28,15 +28,16 @@ namespace lithostress
   {
   public:
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
 
     /** Parse `Loads/Slab pull`; false if it is not enabled. */
     bool
-    parse_parameters(ParameterHandler &prm, const ModelDescription<dim> &model);
+    parse_parameters(ParameterHandler            &prm,
+                     const ModelDescription<dim> &model) override;
 
     /** Whether the vertical pull is derived from the load balance. */
     bool
-    balances_vertical_loads() const
+    balances_vertical_loads() const override
     {
       return balancing;
     }
@@ -47,7 +48,7 @@ namespace lithostress
      * other loads pull down: a slab pull cannot balance them.
      */
     void
-    balance(const double upthrust);
+    balance(const double upthrust) override;
 
     /** The force per unit length F [N/m] on the part. */
     Tensor<1, dim>

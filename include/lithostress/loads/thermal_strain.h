@@ -23,10 +23,11 @@ namespace lithostress
   {
   public:
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, ParameterHandler *first_pass);
     /** Returns whether a temperature change is given. */
     bool
-    parse_parameters(ParameterHandler &prm);
+    parse_parameters(ParameterHandler &prm,
+                     const ModelDescription<dim> &) override;
 
     void
     add_cell_terms(const FEValues<dim>              &fe_values,

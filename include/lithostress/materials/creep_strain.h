@@ -1,6 +1,7 @@
 #ifndef lithostress_materials_creep_strain_h
 #define lithostress_materials_creep_strain_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/distributed/solution_transfer.h>
@@ -79,10 +80,16 @@ namespace lithostress
     /** The 3-D tensor of the components @p c (xx, yy, xy, zz in 2-D). */
     static SymmetricTensor<2, 3>
     tensor(const Vector<double> &c);
+    /** The same for the components @p c of a point's history. */
+    static SymmetricTensor<2, 3>
+    tensor(const ArrayView<const double> &c);
 
     /** The components of @p t (the inverse of tensor()). */
     static void
     components(const SymmetricTensor<2, 3> &t, Vector<double> &c);
+    /** The same into @p c, which has n_components values. */
+    static void
+    components(const SymmetricTensor<2, 3> &t, const ArrayView<double> &c);
 
     /** Set the values at the nodes of an owned @p cell. */
     void

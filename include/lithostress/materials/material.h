@@ -32,6 +32,9 @@ namespace lithostress
     double tensile_strength;
     /** Viscosity η [Pa s]; 0 means elastic. */
     double viscosity;
+    /** The name of its rock law (a registered Rheology; `automatic`
+     * resolved: maxwell with a viscosity, elastic without). */
+    std::string rheology;
 
     /** Shear modulus G = E / 2(1 + ν). */
     double

@@ -8,47 +8,44 @@
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/initial_stress_source.h>
 #include <lithostress/materials/material.h>
-#include <lithostress/materials/maxwell_material.h>
-#include <lithostress/materials/creep_strain.h>
+#include <lithostress/materials/rheology.h>
 
 #include <map>
+#include <memory>
 #include <vector>
 
 namespace lithostress
 {
-  /** The stress at a point: the in-plane tensor and σ_zz (tension positive). */
-  template <int dim>
-  struct StressState
-  {
-    SymmetricTensor<2, dim> in_plane;
-    double                  zz = 0;
-  };
-
   /**
    * The constitutive law as every result sees it (thesis eq. 3.38,
-   * σ = C(ε − ε0)): the elastic stress of the cell's material in the model's
-   * plane state plus the stresses of the initial strains carried by loads
-   * (thermal strain, §3.8). Output, point values, stress–depth profiles, error
-   * norms and refinement indicators all take their stress from here, so that
-   * an initial strain enters every result once and in the same way.
+   * σ = C(ε − ε0)): the Rheology of each material (elastic, Maxwell, ...,
+   * `Materials/<name>/Rheology`) in the model's plane state, given the
+   * stresses of the initial strains carried by loads (thermal strain,
+   * §3.8). Output, point values, stress–depth profiles, error norms,
+   * refinement indicators and the creep update all take their stress from
+   * here, so that an initial strain enters every result once and in the
+   * same way.
    *
-   * With Maxwell materials (thesis §3.9) the model also holds the creep-strain
-   * history (attach_creep_strain()): every reported stress is then
-   * σ = C (ε − c) + thermal stress, with the elastic moduli and the creep
-   * strain c at the point, and a time step's linear system uses the relaxed
-   * moduli of step_moduli() (set_time_step()).
+   * With creeping materials (thesis §3.9) the model also holds the creep
+   * history (attach_creep_strain()): every reported stress is then the
+   * law's with the history at the point, and a time step's linear system
+   * uses the step moduli of its laws (set_time_step()).
    */
   template <int dim>
   class StressModel
   {
   public:
-    /** The stress of @p materials in @p plane_state, with the initial
-     * stresses of those @p sources that carry one (the model's loads). */
-    StressModel(const MaterialLibrary                           &materials,
-                const PlaneState                                 plane_state,
+    /** The rock laws of @p materials (each made from the registry and
+     * reading its parameters from @p prm, `Materials/<name>`) in
+     * @p plane_state, with the initial stresses of those @p sources that
+     * carry one (the model's loads). */
+    StressModel(ParameterHandler      &prm,
+                const MaterialLibrary &materials,
+                const PlaneState       plane_state,
                 const std::vector<const InitialStressSource<dim> *> &sources);
 
-    /** The stress at @p p in a cell of material @p id with strain @p strain. */
+    /** The stress at @p p in a cell of material @p id with strain @p strain
+     * and no history. */
     StressState<dim>
     stress(const types::material_id       id,
            const Point<dim>              &p,
@@ -74,22 +71,27 @@ namespace lithostress
            const SymmetricTensor<2, dim> &strain) const;
 
     /**
-     * The stress of the current time step's law at @p p: the step moduli
-     * (relaxed shear modulus) with the history strain @p history as initial
-     * strain (MaxwellMaterial). Equal to stress() for elastic materials or
-     * a step of length 0.
+     * The law of material @p id at one point: the loads' initial stresses
+     * at in.position (with the moduli the law uses for @p in) are put into
+     * @p in, then Rheology::evaluate(). The creep update of a time step.
      */
-    StressState<dim>
-    step_stress(const types::material_id       id,
-                const Point<dim>              &p,
-                const SymmetricTensor<2, dim> &strain,
-                const SymmetricTensor<2, 3>   &history) const;
+    void
+    evaluate(const types::material_id id,
+             RheologyInputs<dim>     &in,
+             RheologyOutputs<dim>    &out) const;
+
+    /** The rock law of material @p id. */
+    const Rheology<dim> &
+    rheology(const types::material_id id) const
+    {
+      return *rheology_of.at(id);
+    }
 
     /** The elastic moduli of material @p id. */
     const ElasticModuli<dim> &
     moduli(const types::material_id id) const
     {
-      return moduli_of.at(id);
+      return rheology_of.at(id)->elastic_moduli();
     }
 
     /** The moduli of the current time step's linear system (assembly and
@@ -98,14 +100,7 @@ namespace lithostress
     const ElasticModuli<dim> &
     step_moduli(const types::material_id id) const
     {
-      return step_moduli_of.at(id);
-    }
-
-    /** The Maxwell law of material @p id. */
-    const MaxwellMaterial<dim> &
-    maxwell(const types::material_id id) const
-    {
-      return maxwell_of.at(id);
+      return rheology_of.at(id)->step_moduli();
     }
 
     /** Whether any material creeps. */
@@ -150,11 +145,21 @@ namespace lithostress
     const PlaneState       plane_state;
 
   private:
-    std::map<types::material_id, ElasticModuli<dim>>   moduli_of;
-    std::map<types::material_id, ElasticModuli<dim>>   step_moduli_of;
-    std::map<types::material_id, MaxwellMaterial<dim>> maxwell_of;
-    std::vector<const InitialStressSource<dim> *>      initial_stress_loads;
-    const CreepStrain<dim>                            *creep_strain = nullptr;
+    /** The loads' initial stresses at @p p in material @p id with
+     * @p moduli. */
+    StressState<dim>
+    initial_stress(const types::material_id  id,
+                   const Point<dim>         &p,
+                   const ElasticModuli<dim> &moduli) const;
+
+    std::map<types::material_id, std::unique_ptr<Rheology<dim>>> rheology_of;
+    /** The number of history components of each material's law, and as
+     * many zeros as the largest has (the history of a state without
+     * one). */
+    std::map<types::material_id, unsigned int>    history_size_of;
+    std::vector<double>                           zero_history;
+    std::vector<const InitialStressSource<dim> *> initial_stress_loads;
+    const CreepStrain<dim>                       *creep_strain = nullptr;
     double             step_length = 0, step_theta = 1;
     unsigned long long version = 0;
   };

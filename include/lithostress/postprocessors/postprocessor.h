@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <lithostress/base/plugin_registry.h>
 #include <lithostress/postprocessors/simulator_access.h>
 
 #include <functional>
@@ -23,8 +24,7 @@ namespace lithostress
    * its own parameters and is called at the moments of a run below (each
    * with an empty default); it reads the
    * run only through SimulatorAccess. Adding one is its own files and one
-   * line in PostprocessorList::registered() (source/postprocessors/
-   * postprocessor_list.cc).
+   * line, LITHOSTRESS_REGISTER_POSTPROCESSOR, in its source file.
    */
   template <int dim>
   class Postprocessor
@@ -36,7 +36,8 @@ namespace lithostress
      * DoFs yet); throws InputError naming the entry. */
     virtual void
     parse_parameters(ParameterHandler &, const SimulatorAccess<dim> &)
-    {}
+    {
+    }
 
     /**
      * After the solve of refinement cycle @p cycle. Columns of the
@@ -48,7 +49,8 @@ namespace lithostress
                    const unsigned int,
                    ConvergenceStudy &,
                    std::ostream &)
-    {}
+    {
+    }
 
     /**
      * After cycle @p cycle's report, once it is known whether it is the
@@ -57,43 +59,54 @@ namespace lithostress
      */
     virtual void
     cycle_output(const SimulatorAccess<dim> &, const unsigned int, const bool)
-    {}
+    {
+    }
 
     /** At output time number @p index (model time @p time [s]) of the
      * visco-elastic loop. */
     virtual void
     output_time(const SimulatorAccess<dim> &, const unsigned int, const double)
-    {}
+    {
+    }
 
     /** After a solve that stopped with an error, with its last iterate as
      * the solution: what lets the user see where it went wrong. */
     virtual void
     solve_failed(const SimulatorAccess<dim> &)
-    {}
+    {
+    }
 
     /** After the last cycle or time step. */
     virtual void
     finish(const SimulatorAccess<dim> &)
-    {}
+    {
+    }
 
     /** The run was stopped at a safe point (Ctrl-C, SIGTERM): write what
      * describes the run so far. */
     virtual void
     interrupted(const SimulatorAccess<dim> &)
-    {}
+    {
+    }
 
     /** State kept in a checkpoint of the visco-elastic loop (rows written
      * so far), as named strings. */
     virtual void
     save(std::map<std::string, std::string> &) const
-    {}
+    {
+    }
 
     /** Restore the state of save() on resuming; rewrite its files. */
     virtual void
     load(const SimulatorAccess<dim> &,
          const std::map<std::string, std::string> &)
-    {}
+    {
+    }
   };
+
+  /** The postprocessors, in calling order (their registered positions). */
+  template <int dim>
+  using PostprocessorRegistry = PluginRegistry<Postprocessor<dim>>;
 
   /**
    * The run's postprocessors, in the order they are called (which is the
@@ -134,32 +147,34 @@ namespace lithostress
     void
     save(std::map<std::string, std::string> &state) const;
     void
-    load(const SimulatorAccess<dim>                &access,
+    load(const SimulatorAccess<dim>               &access,
          const std::map<std::string, std::string> &state);
 
   private:
-    /** A registered postprocessor: how to declare its parameters and how
-     * to make one. */
-    struct Entry
-    {
-      std::function<void(ParameterHandler &)>          declare;
-      std::function<std::unique_ptr<Postprocessor<dim>>()> create;
-    };
-
-    /** Every postprocessor, in calling order. */
-    static std::vector<Entry>
-    registered();
-
-    /** The entry of postprocessor class @p T. */
-    template <class T>
-    static Entry
-    entry()
-    {
-      return {&T::declare_parameters, []() { return std::make_unique<T>(); }};
-    }
-
     std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
   };
 } // namespace lithostress
+
+/**
+ * Register the postprocessor class template @p classname (with a static
+ * `declare_parameters(ParameterHandler &)`) under @p name, called at
+ * @p position among the others (the convergence table's columns and the
+ * log's lines come out in this order); one line in its source file.
+ */
+#define LITHOSTRESS_REGISTER_POSTPROCESSOR(classname,           \
+                                           name,                \
+                                           description,         \
+                                           position)            \
+  LITHOSTRESS_REGISTER_PLUGIN(                                  \
+    ::lithostress::PostprocessorRegistry<2>,                    \
+    {name,                                                      \
+     description,                                               \
+     [](ParameterHandler &prm, ParameterHandler *) {            \
+       classname<2>::declare_parameters(prm);                   \
+     },                                                         \
+     []() -> std::unique_ptr<::lithostress::Postprocessor<2>> { \
+       return std::make_unique<classname<2>>();                 \
+     },                                                         \
+     position})
 
 #endif

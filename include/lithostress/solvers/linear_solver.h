@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <lithostress/base/interruption.h>
+#include <lithostress/base/plugin_registry.h>
 #include <lithostress/boundary_conditions/prescribed_displacement.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
@@ -211,6 +212,13 @@ namespace lithostress
     }
   };
 
+  /** The linear solvers `Solver/Type` selects (besides `automatic`), made
+   * from the `Solver` subsection and the model's element space. */
+  template <int dim>
+  using LinearSolverRegistry = PluginRegistry<LinearSolver<dim>,
+                                              ParameterHandler &,
+                                              const FiniteElementSpace<dim> &>;
+
   /**
    * The `Solver` section: which solver and its settings. `automatic` takes
    * the matrix-free geometric multigrid wherever the model allows it (one
@@ -241,5 +249,25 @@ namespace lithostress
            const std::string             &constraint_obstacle = "");
   };
 } // namespace lithostress
+
+/**
+ * Register the linear solver class template @p classname as `Solver/Type =
+ * name`: it has a static `declare_parameters(ParameterHandler &)` for its
+ * own entries of `Solver` and a static `create(ParameterHandler &, const
+ * FiniteElementSpace<2> &)` that reads them (and the shared `Relative
+ * tolerance`, `Maximum iterations`, `Time matrix-vector product`); one line
+ * in its source file.
+ */
+#define LITHOSTRESS_REGISTER_LINEAR_SOLVER(classname, name, description)       \
+  LITHOSTRESS_REGISTER_PLUGIN(::lithostress::LinearSolverRegistry<2>,          \
+                              {name,                                           \
+                               description,                                    \
+                               [](ParameterHandler &prm, ParameterHandler *) { \
+                                 classname<2>::declare_parameters(prm);        \
+                               },                                              \
+                               [](ParameterHandler            &prm,            \
+                                  const FiniteElementSpace<2> &fe_space) {     \
+                                 return classname<2>::create(prm, fe_space);   \
+                               }})
 
 #endif

@@ -75,6 +75,15 @@ namespace lithostress
                               const unsigned int fe_degree);
     ~MatrixFreeMultigridSolver() override;
 
+    /** Declare this solver's entries of `Solver`. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** The solver of the `Solver` subsection (entered) for @p fe_space. */
+    static std::unique_ptr<LinearSolver<dim>>
+    create(ParameterHandler &prm, const FiniteElementSpace<dim> &fe_space);
+
+
     /** Whether the multigrid applies to a model with @p fe_space and
      * @p loads; if not, @p reason says why. */
     static bool

@@ -32,6 +32,15 @@ namespace lithostress
 
     explicit TwoFieldMultigridSolver(const Settings &settings);
 
+    /** Declare this solver's entries of `Solver`. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** The solver of the `Solver` subsection (entered) for @p fe_space. */
+    static std::unique_ptr<LinearSolver<dim>>
+    create(ParameterHandler &prm, const FiniteElementSpace<dim> &fe_space);
+
+
     std::string
     name() const override
     {
