@@ -9,7 +9,7 @@ import sys
 
 LAYERS = ["base", "geometry", "materials", "reference_solutions",
           "discretization", "loads", "boundary_conditions", "assembly",
-          "solvers", "faults", "postprocess", "output", "refinement",
+          "solvers", "faults", "analysis", "refinement",
           "time_integration", "postprocessors", "simulator"]
 
 root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")

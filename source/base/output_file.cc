@@ -1,11 +1,14 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/output_file.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 namespace lithostress
@@ -90,5 +93,30 @@ namespace lithostress
         throw ComputationError("cannot rename the complete <" + temporary +
                                "> to <" + file_name + ">");
       }
+  }
+  void
+  check_output_directory(const std::string &directory,
+                         const MPI_Comm     communicator)
+  {
+    std::string problem;
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      {
+        std::error_code error;
+        std::filesystem::create_directories(directory, error);
+        if (error)
+          problem = "cannot create it: " + error.message();
+        else
+          {
+            const std::string probe = directory + "/.write-test";
+            std::ofstream     out(probe);
+            if (!out)
+              problem = "cannot write into it";
+            out.close();
+            std::filesystem::remove(probe, error);
+          }
+      }
+    problem = dealii::Utilities::MPI::broadcast(communicator, problem, 0);
+    if (!problem.empty())
+      throw_input_error("Output directory", "<" + directory + ">: " + problem);
   }
 } // namespace lithostress

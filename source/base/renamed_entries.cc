@@ -85,7 +85,7 @@ namespace lithostress
       for (const RenamedValue &r : renamed_values())
         if (path_matches(path, r.entry) && value == r.old_value)
           return where + " = <" + r.old_value + "> is now called <" +
-                 r.new_value + "> (since " + r.since + ")";
+                 r.new_value + "> (since " + r.since + "); set that";
       return "";
     }
   } // namespace

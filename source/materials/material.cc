@@ -113,10 +113,6 @@ namespace lithostress
           throw_input_error(where + "Viscosity", "must not be negative");
         if (m.rheology == "automatic")
           m.rheology = m.viscosity > 0 ? "maxwell" : "elastic";
-        else if (m.rheology == "elastic" && m.viscosity > 0)
-          throw_input_error(where + "Viscosity",
-                            "is given, but Rheology = elastic does not "
-                            "creep: remove the viscosity or choose maxwell");
         if (id.empty())
           {
             m.id = numbers::invalid_material_id;

@@ -1,3 +1,4 @@
+#include <lithostress/base/input_error.h>
 #include <lithostress/materials/stress_model.h>
 
 #include <array>
@@ -23,6 +24,11 @@ namespace lithostress
         prm.enter_subsection(m.name);
         law->parse_parameters(prm, m, plane_state);
         prm.leave_subsection();
+        if (m.viscosity > 0 && !law->creeps())
+          throw_input_error("Materials/" + m.name + "/Viscosity",
+                            "is given, but Rheology = " + m.rheology +
+                              " does not creep: remove the viscosity or "
+                              "choose a law that uses it (maxwell)");
         history_size_of[m.id] = law->history_names().size();
         rheology_of.emplace(m.id, std::move(law));
       }

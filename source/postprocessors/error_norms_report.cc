@@ -1,4 +1,4 @@
-#include <lithostress/postprocess/error_norms.h>
+#include <lithostress/analysis/error_norms.h>
 #include <lithostress/postprocessors/error_norms_report.h>
 
 #include <algorithm>

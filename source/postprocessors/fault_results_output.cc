@@ -1,5 +1,5 @@
 #include <lithostress/base/input_error.h>
-#include <lithostress/postprocess/fault_output.h>
+#include <lithostress/analysis/fault_output.h>
 #include <lithostress/postprocessors/fault_results_output.h>
 #include <lithostress/postprocessors/surface_profile_output.h>
 

@@ -1,5 +1,5 @@
 #include <lithostress/base/input_error.h>
-#include <lithostress/postprocess/force_balance.h>
+#include <lithostress/analysis/force_balance.h>
 #include <lithostress/postprocessors/force_balance_output.h>
 
 namespace lithostress

@@ -1,8 +1,8 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/output_file.h>
 #include <lithostress/base/parameter_file.h>
-#include <lithostress/postprocess/point_values.h>
-#include <lithostress/postprocess/stress_sampling.h>
+#include <lithostress/analysis/point_values.h>
+#include <lithostress/analysis/stress_sampling.h>
 #include <lithostress/postprocessors/point_values_output.h>
 
 #include <iomanip>

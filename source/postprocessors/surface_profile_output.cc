@@ -1,5 +1,5 @@
 #include <lithostress/base/input_error.h>
-#include <lithostress/postprocess/surface_profile.h>
+#include <lithostress/analysis/surface_profile.h>
 #include <lithostress/postprocessors/surface_profile_output.h>
 
 namespace lithostress

@@ -3,7 +3,7 @@
 #include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/interruption.h>
-#include <lithostress/postprocess/force_balance.h>
+#include <lithostress/analysis/force_balance.h>
 #include <lithostress/refinement/dual_solutions.h>
 #include <lithostress/simulator/elastic_problem.h>
 

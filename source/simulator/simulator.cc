@@ -14,8 +14,6 @@
 #include <lithostress/simulator/viscoelastic_time_loop.h>
 #include <lithostress/time_integration/checkpoint.h>
 
-#include <filesystem>
-#include <fstream>
 #include <set>
 
 namespace lithostress
@@ -122,7 +120,7 @@ namespace lithostress
     read_physics();
     read_numerics();
     check_well_posed();
-    check_output_directory();
+    lithostress::check_output_directory(output_directory, communicator);
   }
 
   template <int dim>
@@ -350,33 +348,6 @@ namespace lithostress
                    std::to_string(cycles.settings().n_cycles - 1) + ")",
                  std::min(first + cycles.settings().n_cycles - 1,
                           std::max(first, cycles.settings().max_level)));
-  }
-
-  template <int dim>
-  void
-  Simulator<dim>::check_output_directory() const
-  {
-    std::string problem;
-    if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      {
-        std::error_code error;
-        std::filesystem::create_directories(output_directory, error);
-        if (error)
-          problem = "cannot create it: " + error.message();
-        else
-          {
-            const std::string probe = output_directory + "/.write-test";
-            std::ofstream     out(probe);
-            if (!out)
-              problem = "cannot write into it";
-            out.close();
-            std::filesystem::remove(probe, error);
-          }
-      }
-    problem = Utilities::MPI::broadcast(communicator, problem, 0);
-    if (!problem.empty())
-      throw_input_error("Output directory",
-                        "<" + output_directory + ">: " + problem);
   }
 
   template <int dim>

@@ -63,7 +63,8 @@ namespace lithostress
   namespace
   {
     /** The first line of state.txt: the format of what follows. */
-    const std::string state_format = "lithostress-checkpoint 3";
+    // 4: the model text holds each material's Rheology (2026-12-01).
+    const std::string state_format = "lithostress-checkpoint 4";
   } // namespace
 
   void
@@ -126,12 +127,20 @@ namespace lithostress
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
       {
         const std::string directory = current(output_directory);
+        std::string       format;
         std::ifstream     saved(directory + "/model.prm");
         if (directory.empty())
           problem = "there is no checkpoint in " + output_directory +
                     " (no checkpoint.current)";
         else if (!saved)
           problem = "the checkpoint " + directory + " has no model.prm";
+        else if (std::ifstream state(directory + "/state.txt");
+                 state && std::getline(state, format) &&
+                 format != state_format)
+          problem = "the checkpoint " + directory +
+                    " was written by another version of lithostress (format <" +
+                    format + ">; this one reads <" + state_format +
+                    ">): it cannot be resumed, start the run anew";
         else
           {
             std::stringstream text;

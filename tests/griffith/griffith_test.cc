@@ -7,7 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/postprocess/griffith_failure.h>
+#include <lithostress/analysis/griffith_failure.h>
 
 #include <algorithm>
 #include <array>

@@ -63,10 +63,15 @@ expected = {
     "memory_limit_unparsable": "Resources/Memory limit",
     # The visco-elastic time loop.
     "negative_viscosity": "Viscosity",
+    "maxwell_without_viscosity": "Materials/rock/Viscosity>: must be positive for Rheology = maxwell",
+    "elastic_with_viscosity": "Materials/rock/Viscosity>: is given, but Rheology = elastic does not creep",
+    "renamed_scheme_value": "renamed_scheme_value.prm:55: Time stepping/Scheme = <implicit> is now called <generalized midpoint> (since 2026-11-25, dc58760); set that",
+    "renamed_gravity_entry": "renamed_gravity_entry.prm:70: the entry <Loads/Gravity/Acceleration> has moved to <Gravity field/Acceleration> (since 2026-11-26, 2c42bf2)",
     "end_time_zero": "Time stepping/End time",
     "output_time_after_end": "Time stepping/Output times>: the time 4000 years is outside [0, End time]",
     "resume_without_checkpoint": "Time stepping/Resume>: there is no checkpoint",
     "resume_other_model": "checkpoint-000007 belongs to another model",
+    "resume_old_checkpoint": "checkpoint-000007 was written by another version of lithostress (format <lithostress-checkpoint 3>",
     "fault_not_named": "Faults/Names>: the geometry has the fault <fault>: name it here",
     "fault_outside_box": "Geometry/Layered box/Fault surface x>: the fault must cross the box from the top to the base",
     "friction_negative": "Faults/fault/Friction coefficient>: must be at least 0, got -0.1",
@@ -130,6 +135,16 @@ def run_case(name, ranks):
         f.write("results of an earlier run\n")
     with open(os.path.join(earlier, "figures", "surface_profile.csv"), "w") as f:
         f.write("x,u_x,u_y,y\n0,1,2,3\n")
+    if name == "resume_old_checkpoint":
+        # A checkpoint of the same model in the format before the rock laws
+        # became Rheology plug-ins (2026-12-01).
+        os.makedirs(os.path.join(earlier, "checkpoint-000007"))
+        with open(os.path.join(earlier, "checkpoint.current"), "w") as f:
+            f.write("checkpoint-000007\n")
+        with open(os.path.join(earlier, "checkpoint-000007", "state.txt"), "w") as f:
+            f.write("lithostress-checkpoint 3\n22 serialization::archive 19 0 0\n")
+        with open(os.path.join(earlier, "checkpoint-000007", "model.prm"), "w") as f:
+            f.write(open(os.path.join(os.path.dirname(HERE), "viscoelastic", "maxwell_block.prm")).read())
     if name == "resume_other_model":
         # The checkpoint of a stiffer block.
         os.makedirs(os.path.join(earlier, "checkpoint-000007"))

@@ -119,11 +119,11 @@ namespace
     return Point<2>(c[0] / area, c[1] / area);
   }
 
-  /** A material library with one material of id 0. */
+  /** A material library with one material of id 0, read from @p prm
+   * (which StressModel reads the material's law from). */
   MaterialLibrary
-  rock()
+  rock(ParameterHandler &prm)
   {
-    ParameterHandler prm;
     MaterialLibrary::declare_parameters(prm, nullptr);
     prm.parse_input_from_string("subsection Materials\n"
                                 "  set Names = rock\n"
@@ -165,8 +165,12 @@ main(int argc, char **argv)
   DoFHandler<2>               dof_handler(tria);
   dof_handler.distribute_dofs(fe_space.fe_collection());
 
-  const MaterialLibrary materials = rock();
-  const StressModel<2>  stress_model(materials, PlaneState::plane_strain, {});
+  ParameterHandler      material_prm;
+  const MaterialLibrary materials = rock(material_prm);
+  const StressModel<2>  stress_model(material_prm,
+                                    materials,
+                                    PlaneState::plane_strain,
+                                    {});
 
   // name: component, x_min, x_max, y_min, y_max
   struct Box

@@ -23,7 +23,7 @@ namespace lithostress
    *
    * In a step of the visco-elastic loop the stiffness is that of the step
    * moduli (StressModel::step_moduli(), the relaxed shear modulus) and the
-   * history strain c* of the step (MaxwellMaterial) adds the initial-strain
+   * history strain c* of the step (MaxwellRheology) adds the initial-strain
    * term −∫ ε(v) : σ(c*) dx to the right-hand side.
    */
   template <int dim>

@@ -1,6 +1,8 @@
 #ifndef lithostress_base_output_file_h
 #define lithostress_base_output_file_h
 
+#include <mpi.h>
+
 #include <sstream>
 #include <string>
 
@@ -50,6 +52,15 @@ namespace lithostress
   write_file_atomically(const std::string &file_name,
                         const std::string &text,
                         const bool         check_numbers = true);
+  /**
+   * Create the output directory @p directory (rank 0 of @p communicator)
+   * and probe it with a test file, before anything of a run is written;
+   * an InputError naming `Output directory` on every rank if it cannot be
+   * made or written into.
+   */
+  void
+  check_output_directory(const std::string &directory,
+                         const MPI_Comm     communicator);
 } // namespace lithostress
 
 #endif

@@ -17,8 +17,8 @@ namespace lithostress
   using namespace dealii;
 
   /**
-   * The plug-ins of one kind (geometries, loads, rheologies, interface laws,
-   * linear solvers, postprocessors), each added by one registration line
+   * The plug-ins of one kind (geometries, loads, rheologies, linear solvers,
+   * postprocessors), each added by one registration line
    * in its own source file (in the way of ASPECT's plug-in macros). A kind
    * is the interface @p Interface and the arguments @p Arguments its
    * plug-ins are made from. The registry is what the program knows of its

@@ -48,7 +48,7 @@ namespace lithostress
     ElasticModuli(const Material &material, const PlaneState plane_state);
 
     /** The moduli with 3-D Lamé parameters @p lambda_3d and @p mu (the
-     * relaxed moduli of a Maxwell time step, MaxwellMaterial). */
+     * relaxed moduli of a Maxwell time step, MaxwellRheology). */
     ElasticModuli(const double     lambda_3d,
                   const double     mu,
                   const PlaneState plane_state);

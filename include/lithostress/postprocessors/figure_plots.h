@@ -1,7 +1,7 @@
 #ifndef lithostress_postprocessors_figure_plots_h
 #define lithostress_postprocessors_figure_plots_h
 
-#include <lithostress/output/figures.h>
+#include <lithostress/postprocessors/figures.h>
 #include <lithostress/postprocessors/postprocessor.h>
 
 namespace lithostress

@@ -1,7 +1,7 @@
 #ifndef lithostress_postprocessors_paraview_output_h
 #define lithostress_postprocessors_paraview_output_h
 
-#include <lithostress/output/solution_output.h>
+#include <lithostress/postprocessors/solution_output.h>
 #include <lithostress/postprocessors/postprocessor.h>
 
 namespace lithostress

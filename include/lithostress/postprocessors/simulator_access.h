@@ -14,8 +14,8 @@
 #include <lithostress/faults/fault_slip_history.h>
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/stress_model.h>
-#include <lithostress/postprocess/convergence_study.h>
-#include <lithostress/postprocess/griffith_failure.h>
+#include <lithostress/analysis/convergence_study.h>
+#include <lithostress/analysis/griffith_failure.h>
 #include <lithostress/reference_solutions/reference_solution.h>
 #include <lithostress/solvers/linear_solver.h>
 

@@ -1,8 +1,8 @@
 #ifndef lithostress_postprocessors_stress_depth_output_h
 #define lithostress_postprocessors_stress_depth_output_h
 
-#include <lithostress/output/figures.h>
-#include <lithostress/postprocess/stress_depth_profiles.h>
+#include <lithostress/postprocessors/figures.h>
+#include <lithostress/analysis/stress_depth_profiles.h>
 #include <lithostress/postprocessors/postprocessor.h>
 
 namespace lithostress

@@ -1,7 +1,7 @@
 #ifndef lithostress_postprocessors_thin_plate_output_h
 #define lithostress_postprocessors_thin_plate_output_h
 
-#include <lithostress/postprocess/thin_plate_flexure.h>
+#include <lithostress/analysis/thin_plate_flexure.h>
 #include <lithostress/postprocessors/postprocessor.h>
 
 #include <array>

@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <lithostress/base/memory_budget.h>
-#include <lithostress/postprocess/convergence_study.h>
+#include <lithostress/analysis/convergence_study.h>
 #include <lithostress/postprocessors/postprocessor.h>
 #include <lithostress/refinement/mesh_refinement.h>
 #include <lithostress/refinement/stress_goals.h>

@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 
+#include <lithostress/analysis/griffith_failure.h>
 #include <lithostress/base/memory_budget.h>
 #include <lithostress/base/run_log.h>
 #include <lithostress/boundary_conditions/prescribed_displacement.h>
@@ -17,7 +18,6 @@
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/material.h>
 #include <lithostress/materials/stress_model.h>
-#include <lithostress/postprocess/griffith_failure.h>
 #include <lithostress/postprocessors/postprocessor.h>
 #include <lithostress/reference_solutions/reference_solution.h>
 #include <lithostress/simulator/elastic_problem.h>
@@ -97,8 +97,6 @@ namespace lithostress
      */
     void
     check_well_posed();
-    void
-    check_output_directory() const;
     /** Open log.txt and write parameters.prm: called once the first
      * assembly has accepted the model. */
     void

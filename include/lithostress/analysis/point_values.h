@@ -1,0 +1,47 @@
+#ifndef lithostress_analysis_point_values_h
+#define lithostress_analysis_point_values_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/materials/stress_model.h>
+
+#include <vector>
+
+namespace lithostress
+{
+  /** Displacement and stress of the solution at one point. */
+  template <int dim>
+  struct PointValue
+  {
+    Point<dim>              point;
+    Tensor<1, dim>          displacement;
+    SymmetricTensor<2, dim> stress;
+    double                  sigma_zz = 0;
+    /** The material of the evaluating cell. */
+    types::material_id material_id = 0;
+    /** Whether the point lies in the mesh (only false when outside points
+     * are allowed). */
+    bool inside = true;
+  };
+
+  /**
+   * Evaluates the solution at given points on a distributed mesh: the rank
+   * that owns a cell containing the point evaluates it (through the
+   * degree-p mapping), and the values are shared with all ranks. A point
+   * outside the mesh is an error naming it, unless @p allow_outside (then it
+   * is returned with `inside = false`, e.g. for sampling grids).
+   */
+  template <int dim>
+  std::vector<PointValue<dim>>
+  evaluate_at_points(const DoFHandler<dim>               &dof_handler,
+                     const FiniteElementSpace<dim>       &fe_space,
+                     const StressModel<dim>              &stress_model,
+                     const TrilinosWrappers::MPI::Vector &solution,
+                     const std::vector<Point<dim>>       &points,
+                     const bool allow_outside = false);
+} // namespace lithostress
+
+#endif
