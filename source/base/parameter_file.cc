@@ -100,8 +100,10 @@ namespace lithostress
                               const std::string   &filename,
                               const ExceptionBase &exc)
     {
-      const std::string renamed = renamed_entry_message(contents, filename);
-      throw InputError(renamed.empty() ? one_line_message(exc) : renamed);
+      const std::string parser = one_line_message(exc);
+      const std::string renamed =
+        renamed_entry_message(contents, filename, parser);
+      throw InputError(renamed.empty() ? parser : renamed);
     }
   } // namespace
 

@@ -71,19 +71,33 @@ namespace lithostress
     }
 
     /** The message for setting @p path to @p value; empty if neither the
-     * entry nor the value was renamed. */
+     * entry nor the value was renamed, or if @p parser_message (when not
+     * null) does not name the entry or the value: deal.II writes "No entry
+     * with name <Acceleration>", "The string <implicit> does not match"
+     * (a set()) and "The entry value implicit for the entry named Scheme"
+     * (a file). */
     std::string
-    message_for(const std::vector<std::string> &path, const std::string &value)
+    message_for(const std::vector<std::string> &path,
+                const std::string              &value,
+                const std::string              *parser_message = nullptr)
     {
+      const auto named = [&](const std::string &token) {
+        return parser_message == nullptr ||
+               parser_message->find("<" + token + ">") != std::string::npos;
+      };
       std::string where;
       for (const std::string &p : path)
         where += (where.empty() ? "" : "/") + p;
       for (const RenamedEntry &r : renamed_entries())
-        if (path_matches(path, r.old_path))
+        if (path_matches(path, r.old_path) && named(path.back()))
           return "the entry <" + where + "> has moved to <" + r.new_path +
                  "> (since " + r.since + "); set it there";
       for (const RenamedValue &r : renamed_values())
-        if (path_matches(path, r.entry) && value == r.old_value)
+        if (path_matches(path, r.entry) && value == r.old_value &&
+            (named(r.old_value) ||
+             parser_message->find("value " + r.old_value +
+                                  " for the entry named " + path.back()) !=
+               std::string::npos))
           return where + " = <" + r.old_value + "> is now called <" +
                  r.new_value + "> (since " + r.since + "); set that";
       return "";
@@ -92,7 +106,8 @@ namespace lithostress
 
   std::string
   renamed_entry_message(const std::string &contents,
-                        const std::string &filename)
+                        const std::string &filename,
+                        const std::string &parser_message)
   {
     std::istringstream       in(contents);
     std::string              line;
@@ -112,7 +127,8 @@ namespace lithostress
             path.push_back(dealii::Utilities::trim(line.substr(4, equal - 4)));
             const std::string message =
               message_for(path,
-                          dealii::Utilities::trim(line.substr(equal + 1)));
+                          dealii::Utilities::trim(line.substr(equal + 1)),
+                          &parser_message);
             if (!message.empty())
               return filename + ":" + std::to_string(number) + ": " + message;
           }

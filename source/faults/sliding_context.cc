@@ -484,7 +484,6 @@ namespace lithostress
       rhs.compress(VectorOperation::add);
     }
 
-    /** A factorisation as a preconditioner: its solve. */
     template <int dim>
     void
     SlidingContext<dim>::hand_over_if_slow()
@@ -521,15 +520,6 @@ namespace lithostress
           << Utilities::MPI::sum(n_points, communicator) << " points";
       return out.str();
     }
-
-    /**
-     * The semi-smooth Newton method (FrictionalSlidingSolver's `newton`,
-     * replacing thesis §5.5's iteration): the elastic predictor, then
-     * Newton steps with the return mapping's consistent tangent and a
-     * backtracking line search on the residual norm. Returns whether the
-     * residual and the excess shear fell below their tolerances; @p c
-     * holds the last iterate.
-     */
 
     template class SlidingContext<2>;
   } // namespace sliding

@@ -4,25 +4,29 @@ namespace lithostress
 {
   namespace sliding
   {
-    class FactorisationPreconditioner
+    namespace
     {
-    public:
-      explicit FactorisationPreconditioner(
-        TrilinosWrappers::SolverDirect &factorization)
-          : factorization(factorization)
+      /** A factorisation as a preconditioner: its solve. */
+      class FactorisationPreconditioner
       {
-      }
+      public:
+        explicit FactorisationPreconditioner(
+          TrilinosWrappers::SolverDirect &factorization)
+            : factorization(factorization)
+        {
+        }
 
-      void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
-      {
-        factorization.solve(dst, src);
-      }
+        void
+        vmult(TrilinosWrappers::MPI::Vector       &dst,
+              const TrilinosWrappers::MPI::Vector &src) const
+        {
+          factorization.solve(dst, src);
+        }
 
-    private:
-      TrilinosWrappers::SolverDirect &factorization;
-    };
+      private:
+        TrilinosWrappers::SolverDirect &factorization;
+      };
+    } // namespace
 
     template <int dim>
     template <typename Krylov, typename Preconditioner>

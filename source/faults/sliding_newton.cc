@@ -4,6 +4,14 @@ namespace lithostress
 {
   namespace sliding
   {
+    /**
+     * The semi-smooth Newton method (FrictionalSlidingSolver's `newton`,
+     * replacing thesis §5.5's iteration): the elastic predictor, then
+     * Newton steps with the return mapping's consistent tangent and a
+     * backtracking line search on the residual norm. Returns whether the
+     * residual and the excess shear fell below their tolerances; @p c
+     * holds the last iterate.
+     */
     template <int dim>
     bool
     solve_by_newton(SlidingContext<dim> &c)

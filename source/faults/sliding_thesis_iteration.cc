@@ -4,142 +4,151 @@ namespace lithostress
 {
   namespace sliding
   {
-    template <int dim>
-    void
-    read_iterate(SlidingContext<dim> &c)
+    namespace
     {
-      if (c.contact)
-        c.contact_tractions(c.u);
-      else
-        c.u_ghost = c.u;
-    }
+      template <int dim>
+      void
+      read_iterate(SlidingContext<dim> &c)
+      {
+        if (c.contact)
+          c.contact_tractions(c.u);
+        else
+          c.u_ghost = c.u;
+      }
 
-    /** The shear @p tau beyond the friction limit @p limit, signed as
-     * @p tau (FSHEAR's STEXS = SHAV -+ FRS); negative where |tau| is below
-     * the limit (a point held at it). */
-    inline double
-    beyond_limit(const double tau, const double limit)
-    {
-      return tau - (tau < 0 ? -1 : 1) * limit;
-    }
+      /** The shear @p tau beyond the friction limit @p limit, signed as
+       * @p tau (FSHEAR's STEXS = SHAV -+ FRS); negative where |tau| is below
+       * the limit (a point held at it). */
+      inline double
+      beyond_limit(const double tau, const double limit)
+      {
+        return tau - (tau < 0 ? -1 : 1) * limit;
+      }
 
-    /**
-     * FSHEAR's step at point @p i: the excess @p e moved into @p slip times
-     * the convergence factor (nodal forces e through the spring k_s);
-     * @p slid marks the point if e moves it; at the first iteration a
-     * point @p over the limit is @p held there from then on (Hold sliding
-     * points at the limit); its state in c.responses follows.
-     */
-    template <int dim>
-    void
-    move_excess_into_slip(SlidingContext<dim> &c,
-                          const unsigned int   i,
-                          const double         e,
-                          const bool           over,
-                          const double         shear_stiffness,
+      /**
+       * FSHEAR's step at point @p i: the excess @p e moved into @p slip times
+       * the convergence factor (nodal forces e through the spring k_s);
+       * @p slid marks the point if e moves it; at the first iteration a
+       * point @p over the limit is @p held there from then on (Hold sliding
+       * points at the limit); its state in c.responses follows.
+       */
+      template <int dim>
+      void
+      move_excess_into_slip(SlidingContext<dim> &c,
+                            const unsigned int   i,
+                            const double         e,
+                            const bool           over,
+                            const double         shear_stiffness,
+                            std::vector<double> &slip,
+                            std::vector<bool>   &slid,
+                            std::vector<bool>   &held)
+      {
+        if (c.iteration == 1 && c.settings.hold_at_limit && over)
+          held[i] = true;
+        if (e != 0)
+          slid[i] = true;
+        slip[i] += c.settings.convergence_factor * e / shear_stiffness;
+        SlipState &state = c.responses[i].state;
+        state            = state == SlipState::open ? SlipState::open
+                           : slid[i]                ? SlipState::sliding
+                                                    : SlipState::stuck;
+      }
+
+      /**
+       * The largest excess shear over the friction limit at the elastic
+       * traction of c.u (thesis §5.5, FSHEAR), moved into @p slip times the
+       * convergence factor; @p slid marks the points that ever slid, @p held
+       * those held at the limit (Hold sliding points at the limit).
+       * c.responses get the states.
+       */
+      template <int dim>
+      double
+      thesis_excess_shear(SlidingContext<dim> &c,
                           std::vector<double> &slip,
                           std::vector<bool>   &slid,
                           std::vector<bool>   &held)
-    {
-      if (c.iteration == 1 && c.settings.hold_at_limit && over)
-        held[i] = true;
-      if (e != 0)
-        slid[i] = true;
-      slip[i] += c.settings.convergence_factor * e / shear_stiffness;
-      SlipState &state = c.responses[i].state;
-      state            = state == SlipState::open ? SlipState::open
-                         : slid[i]                ? SlipState::sliding
-                                                  : SlipState::stuck;
-    }
+      {
+        using PointValues = typename SlidingContext<dim>::PointValues;
+        read_iterate(c);
+        double ex = 0;
+        c.faults.for_each_interface_point(
+          c.dof_handler,
+          c.fe_space,
+          &c.u_ghost,
+          [&](const PointValues &values) {
+            const auto           &p = values.point;
+            const Tensor<1, dim> &w = values.jump;
+            const unsigned int    i = values.index;
+            // The excess over the limit at the elastic traction.
+            const CoulombFriction     &law = c.faults.friction(p.fault);
+            CoulombFriction::Response &r   = c.responses[i];
+            r                              = c.respond(values, slip[i]);
+            const double tau = law.shear_stiffness * (w * p.shear - slip[i]);
+            const double e   = r.state == SlipState::open ? tau
+                               : r.state == SlipState::sliding || held[i]
+                                 ? beyond_limit(tau, r.friction_limit)
+                                 : 0.;
+            ex               = std::max(ex, std::abs(e));
+            move_excess_into_slip(c,
+                                  i,
+                                  e,
+                                  r.state == SlipState::sliding,
+                                  law.shear_stiffness,
+                                  slip,
+                                  slid,
+                                  held);
+          });
+        return Utilities::MPI::max(ex, c.communicator);
+      }
 
-    /**
-     * The largest excess shear over the friction limit at the elastic
-     * traction of c.u (thesis §5.5, FSHEAR), moved into @p slip times the
-     * convergence factor; @p slid marks the points that ever slid, @p held
-     * those held at the limit (Hold sliding points at the limit).
-     * c.responses get the states.
-     */
-    template <int dim>
-    double
-    thesis_excess_shear(SlidingContext<dim> &c,
-                        std::vector<double> &slip,
-                        std::vector<bool>   &slid,
-                        std::vector<bool>   &held)
-    {
-      using PointValues = typename SlidingContext<dim>::PointValues;
-      read_iterate(c);
-      double ex = 0;
-      c.faults.for_each_interface_point(
-        c.dof_handler, c.fe_space, &c.u_ghost, [&](const PointValues &values) {
-          const auto           &p = values.point;
-          const Tensor<1, dim> &w = values.jump;
-          const unsigned int    i = values.index;
-          // The excess over the limit at the elastic traction.
-          const CoulombFriction     &law = c.faults.friction(p.fault);
-          CoulombFriction::Response &r   = c.responses[i];
-          r                              = c.respond(values, slip[i]);
-          const double tau = law.shear_stiffness * (w * p.shear - slip[i]);
-          const double e   = r.state == SlipState::open ? tau
-                             : r.state == SlipState::sliding || held[i]
-                               ? beyond_limit(tau, r.friction_limit)
-                               : 0.;
-          ex               = std::max(ex, std::abs(e));
-          move_excess_into_slip(c,
-                                i,
-                                e,
-                                r.state == SlipState::sliding,
-                                law.shear_stiffness,
-                                slip,
-                                slid,
-                                held);
-        });
-      return Utilities::MPI::max(ex, c.communicator);
-    }
-
-    /**
-     * As thesis_excess_shear(), with FSHEAR's reading of the stresses
-     * (FaultElementStresses): one excess per face pair, from the shear and
-     * effective normal stress of its two cells' centroids, moved into the
-     * slip of all of its points.
-     */
-    template <int dim>
-    double
-    thesis_element_excess_shear(SlidingContext<dim>       &c,
-                                FaultElementStresses<dim> &elements,
-                                std::vector<double>       &slip,
-                                std::vector<bool>         &slid,
-                                std::vector<bool>         &held)
-    {
-      using PointValues = typename SlidingContext<dim>::PointValues;
-      read_iterate(c);
-      double                    ex = 0;
-      std::vector<unsigned int> face;
-      Point<dim>                first;
-      c.faults.for_each_interface_point(
-        c.dof_handler, c.fe_space, &c.u_ghost, [&](const PointValues &values) {
-          const unsigned int i = values.index;
-          if (face.empty())
-            first = values.point.position;
-          face.push_back(i);
-          c.responses[i] = c.respond(values, slip[i]);
-          if (!values.last_of_pair)
-            return;
-          const Point<dim> midpoint = 0.5 * (first + values.point.position);
-          const auto       r = elements.read(values, midpoint, c.u_ghost);
-          const CoulombFriction &law = c.faults.friction(values.point.fault);
-          const double           limit =
-            law.friction_coefficient * std::max(0., -r.effective_normal);
-          const bool   over = std::abs(r.shear) > limit;
-          const double e =
-            over || held[face[0]] ? beyond_limit(r.shear, limit) : 0.;
-          ex = std::max(ex, std::abs(e));
-          for (const unsigned int j : face)
-            move_excess_into_slip(
-              c, j, e, over, law.shear_stiffness, slip, slid, held);
-          face.clear();
-        });
-      return Utilities::MPI::max(ex, c.communicator);
-    }
+      /**
+       * As thesis_excess_shear(), with FSHEAR's reading of the stresses
+       * (FaultElementStresses): one excess per face pair, from the shear and
+       * effective normal stress of its two cells' centroids, moved into the
+       * slip of all of its points.
+       */
+      template <int dim>
+      double
+      thesis_element_excess_shear(SlidingContext<dim>       &c,
+                                  FaultElementStresses<dim> &elements,
+                                  std::vector<double>       &slip,
+                                  std::vector<bool>         &slid,
+                                  std::vector<bool>         &held)
+      {
+        using PointValues = typename SlidingContext<dim>::PointValues;
+        read_iterate(c);
+        double                    ex = 0;
+        std::vector<unsigned int> face;
+        Point<dim>                first;
+        c.faults.for_each_interface_point(
+          c.dof_handler,
+          c.fe_space,
+          &c.u_ghost,
+          [&](const PointValues &values) {
+            const unsigned int i = values.index;
+            if (face.empty())
+              first = values.point.position;
+            face.push_back(i);
+            c.responses[i] = c.respond(values, slip[i]);
+            if (!values.last_of_pair)
+              return;
+            const Point<dim> midpoint = 0.5 * (first + values.point.position);
+            const auto       r = elements.read(values, midpoint, c.u_ghost);
+            const CoulombFriction &law = c.faults.friction(values.point.fault);
+            const double           limit =
+              law.friction_coefficient * std::max(0., -r.effective_normal);
+            const bool   over = std::abs(r.shear) > limit;
+            const double e =
+              over || held[face[0]] ? beyond_limit(r.shear, limit) : 0.;
+            ex = std::max(ex, std::abs(e));
+            for (const unsigned int j : face)
+              move_excess_into_slip(
+                c, j, e, over, law.shear_stiffness, slip, slid, held);
+            face.clear();
+          });
+        return Utilities::MPI::max(ex, c.communicator);
+      }
+    } // namespace
 
     /**
      * The thesis's iteration (thesis §5.5, FSHEAR; FrictionalSlidingSolver's

@@ -2,6 +2,7 @@
 #include <lithostress/materials/stress_model.h>
 
 #include <array>
+#include <stdexcept>
 
 namespace lithostress
 {
@@ -24,6 +25,16 @@ namespace lithostress
         prm.enter_subsection(m.name);
         law->parse_parameters(prm, m, plane_state);
         prm.leave_subsection();
+        // The time loop carries a creeping law's history as the deviatoric
+        // creep strain (CreepStrain) and assembles it as an initial strain.
+        if (law->creeps() &&
+            law->history_names().size() != CreepStrain<dim>::n_components)
+          throw std::logic_error(
+            "the rock law <" + m.rheology + "> creeps with " +
+            std::to_string(law->history_names().size()) +
+            " history components, but the time loop carries the " +
+            std::to_string(CreepStrain<dim>::n_components) +
+            " of a deviatoric creep strain");
         if (m.viscosity > 0 && !law->creeps())
           throw_input_error("Materials/" + m.name + "/Viscosity",
                             "is given, but Rheology = " + m.rheology +

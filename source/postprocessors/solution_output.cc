@@ -93,6 +93,10 @@ namespace lithostress
         for (const Material &m : stress_model.materials.materials())
           if (names.empty() && stress_model.rheology(m.id).creeps())
             names = stress_model.rheology(m.id).history_names();
+        // A time loop without a creeping material still carries the
+        // (zero) creep strain.
+        if (names.empty())
+          names = {"creep_xx", "creep_yy", "creep_xy", "creep_zz"};
         data_out.add_data_vector(creep->dof_handler(), creep->values(), names);
         cell_index = 0;
         for (const auto &cell : tria.active_cell_iterators())

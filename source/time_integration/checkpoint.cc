@@ -135,8 +135,7 @@ namespace lithostress
         else if (!saved)
           problem = "the checkpoint " + directory + " has no model.prm";
         else if (std::ifstream state(directory + "/state.txt");
-                 state && std::getline(state, format) &&
-                 format != state_format)
+                 state && std::getline(state, format) && format != state_format)
           problem = "the checkpoint " + directory +
                     " was written by another version of lithostress (format <" +
                     format + ">; this one reads <" + state_format +
@@ -161,6 +160,9 @@ namespace lithostress
                             (more_b ? line_b : std::string("(end)")) + ">";
               }
           }
+        if (problem.empty() && !directory.empty() &&
+            !std::ifstream(directory + "/state.txt"))
+          problem = "the checkpoint " + directory + " has no state.txt";
       }
     problem = Utilities::MPI::broadcast(communicator, problem, 0);
     if (!problem.empty())

@@ -66,6 +66,7 @@ expected = {
     "maxwell_without_viscosity": "Materials/rock/Viscosity>: must be positive for Rheology = maxwell",
     "elastic_with_viscosity": "Materials/rock/Viscosity>: is given, but Rheology = elastic does not creep",
     "renamed_scheme_value": "renamed_scheme_value.prm:55: Time stepping/Scheme = <implicit> is now called <generalized midpoint> (since 2026-11-25, dc58760); set that",
+    "renamed_entry_after_error": "The entry value abc for the entry named Poisson's ratio does not match the given pattern",
     "renamed_gravity_entry": "renamed_gravity_entry.prm:70: the entry <Loads/Gravity/Acceleration> has moved to <Gravity field/Acceleration> (since 2026-11-26, 2c42bf2)",
     "end_time_zero": "Time stepping/End time",
     "output_time_after_end": "Time stepping/Output times>: the time 4000 years is outside [0, End time]",

@@ -41,11 +41,15 @@ namespace lithostress
   /**
    * The one-line message for the first entry of the parameter text
    * @p contents (of file @p filename) that sets a renamed entry or a
-   * renamed value, "file:line: ..."; empty if there is none.
+   * renamed value and that the parser's message @p parser_message names
+   * (its entry's last name or the old value in angle brackets, as deal.II
+   * writes them), "file:line: ..."; empty if there is none, so that a
+   * failure elsewhere keeps the parser's own message.
    */
   std::string
   renamed_entry_message(const std::string &contents,
-                        const std::string &filename);
+                        const std::string &filename,
+                        const std::string &parser_message);
 
   /** The same for one `Section/Entry=value` override; empty if it names
    * no renamed entry or value. */
