@@ -124,8 +124,10 @@ namespace lithostress
                 in.strain   = strains[q];
                 in.history  = make_array_view(c[q]);
                 stress_model.evaluate(cell->material_id(), in, out);
-                rate[q] = Vector<double>(out.history_rate.begin(),
-                                         out.history_rate.end());
+                rate[q].reinit(out.history_rate.size());
+                std::copy(out.history_rate.begin(),
+                          out.history_rate.end(),
+                          rate[q].begin());
               }
             start_rate.set(cell, rate);
           });

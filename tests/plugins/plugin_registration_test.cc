@@ -24,8 +24,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <lithostress/base/parameter_file.h>
-#include <lithostress/materials/elastic_moduli.h>
-#include <lithostress/materials/rheology.h>
+#include <lithostress/materials/elastic_rheology.h>
 #include <lithostress/postprocessors/postprocessor.h>
 #include <lithostress/simulator/simulator.h>
 
@@ -35,7 +34,6 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -54,9 +52,10 @@ namespace
       ++n_failed;
   }
 
-  /** Isotropic elasticity with its stiffness scaled by `Stiffness factor`. */
+  /** Isotropic elasticity with its stiffness scaled by `Stiffness factor`:
+   * ElasticRheology given the scaled Young's modulus. */
   template <int dim>
-  class ScaledElasticity : public Rheology<dim>
+  class ScaledElasticity : public ElasticRheology<dim>
   {
   public:
     static void
@@ -73,50 +72,10 @@ namespace
                      const Material   &material,
                      const PlaneState  plane_state) override
     {
-      const double f = prm.get_double("Stiffness factor");
-      Material     m = material;
-      m.youngs_modulus *= f;
-      moduli.emplace(m, plane_state);
+      Material scaled = material;
+      scaled.youngs_modulus *= prm.get_double("Stiffness factor");
+      ElasticRheology<dim>::parse_parameters(prm, scaled, plane_state);
     }
-
-    const ElasticModuli<dim> &
-    elastic_moduli() const override
-    {
-      return *moduli;
-    }
-
-    const ElasticModuli<dim> &
-    step_moduli() const override
-    {
-      return *moduli;
-    }
-
-    void
-    set_time_step(const double, const double) override
-    {
-    }
-
-    StressState<dim>
-    stress(const RheologyInputs<dim> &in) const override
-    {
-      StressState<dim> s;
-      s.in_plane = moduli->stress(in.strain) + in.initial_stress.in_plane;
-      s.zz       = moduli->sigma_zz(in.strain) + in.initial_stress.zz;
-      return s;
-    }
-
-    void
-    evaluate(const RheologyInputs<dim> &in,
-             RheologyOutputs<dim>      &out) const override
-    {
-      out.stress  = stress(in);
-      out.tangent = moduli->stiffness();
-      out.history.clear();
-      out.history_rate.clear();
-    }
-
-  private:
-    std::optional<ElasticModuli<dim>> moduli;
   };
 
   /** What the toy postprocessor saw: the cycles it was called for and the
