@@ -1,9 +1,9 @@
 #include <deal.II/base/mpi.h>
 
-#include <lithostress/base/output_file.h>
 #include <lithostress/analysis/fault_output.h>
 #include <lithostress/analysis/stress_sampling.h>
 #include <lithostress/analysis/surface_profile.h>
+#include <lithostress/base/output_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,17 +18,17 @@ namespace lithostress
                const DoFHandler<dim>               &dof_handler,
                const FiniteElementSpace<dim>       &fe_space,
                const TrilinosWrappers::MPI::Vector &solution,
-               const FaultSlipHistory              &history)
+               const FaultHistory                  &history)
   {
     using PointValues = typename FaultInterface<dim>::PointValues;
     std::vector<FaultSample> samples;
     faults.for_each_interface_point(
       dof_handler, fe_space, &solution, [&](const PointValues &values) {
-        const unsigned int     i          = values.index;
-        const auto            &p          = values.point;
-        const Tensor<1, dim>  &w          = values.jump;
-        const CoulombFriction &law        = faults.friction(p.fault);
-        const bool             frictional = law.slides;
+        const unsigned int       i         = values.index;
+        const auto              &p         = values.point;
+        const Tensor<1, dim>    &w         = values.jump;
+        const InterfaceLaw<dim> &law       = faults.law(p.fault);
+        const bool               nonlinear = law.nonlinear();
         const Tensor<1, 2> down = faults.trace(p.fault).down_dip(p.position);
         FaultSample        sample;
         sample.fault         = p.fault;
@@ -39,18 +39,18 @@ namespace lithostress
         sample.slip          = w[0] * down[0] + w[1] * down[1];
         sample.opening       = w * p.normal;
         sample.vertical_jump = w[1];
-        const double w_s = w * p.shear, w_n = w * p.normal;
-        const double slip_p = frictional && i < history.trial_slip.size()
-                                ? history.trial_slip[i]
-                                : 0;
-        const double t_s    = law.shear_stiffness * (w_s - slip_p);
+        // The traction of the last solve's state: the law's stuck response
+        // with that history (the tractions of a frictional law's state).
+        const InterfaceResponse r =
+          law.predictor(FaultInterface<dim>::law_inputs(
+            p, w, nonlinear ? history.trial(i) : ArrayView<const double>()));
         sample.shear_traction =
-          t_s * (p.shear[0] * down[0] + p.shear[1] * down[1]);
+          r.shear_traction * (p.shear[0] * down[0] + p.shear[1] * down[1]);
         sample.normal_traction =
-          law.exact_contact && i < history.normal_traction.size()
+          law.exact_contact() && i < history.normal_traction.size()
             ? history.normal_traction[i]
-            : law.normal_stiffness * w_n;
-        if (frictional)
+            : r.normal_traction;
+        if (nonlinear)
           {
             sample.normal_traction -= law.overburden(p.overburden_depth);
             sample.state = i < history.trial_states.size()
@@ -220,5 +220,5 @@ namespace lithostress
                const DoFHandler<2> &,
                const FiniteElementSpace<2> &,
                const TrilinosWrappers::MPI::Vector &,
-               const FaultSlipHistory &);
+               const FaultHistory &);
 } // namespace lithostress

@@ -4,21 +4,6 @@
 
 namespace lithostress
 {
-  std::string
-  to_string(const SlipState state)
-  {
-    switch (state)
-      {
-      case SlipState::stuck:
-        return "stuck";
-      case SlipState::sliding:
-        return "sliding";
-      case SlipState::open:
-        return "open";
-      }
-    return "";
-  }
-
   CoulombFriction::Response
   CoulombFriction::respond(const double w_s,
                            const double w_n,

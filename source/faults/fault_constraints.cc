@@ -364,9 +364,7 @@ namespace lithostress
       fe_space,
       constraints,
       time,
-      [](const Fault &fault) {
-        return fault.law == Law::locked || fault.law == Law::prescribed_slip;
-      },
+      [](const Fault &fault) { return fault.law->constrains_jump(); },
       nullptr);
   }
 
@@ -384,8 +382,7 @@ namespace lithostress
       constraints,
       0,
       [](const Fault &fault) {
-        return (fault.law == Law::elastic || fault.law == Law::frictional) &&
-               fault.friction.exact_contact;
+        return fault.law->has_face_terms() && fault.law->exact_contact();
       },
       &is_open);
   }
@@ -418,13 +415,11 @@ namespace lithostress
                           const Point<dim>     &x,
                           const Tensor<1, dim> &normal,
                           const unsigned int    d) {
-      if (weld || fault.law != Law::prescribed_slip)
+      if (weld || !fault.law->constrains_jump())
         return 0.0;
-      const Point<1> s(fault.trace.distance_along(x));
-      fault.slip->set_time(time);
-      fault.opening->set_time(time);
-      return fault.slip->value(s) * fault.trace.down_dip(x)[d] +
-             fault.opening->value(s) * normal[d];
+      const Tensor<1, 2> w =
+        fault.law->prescribed_jump(fault.trace.distance_along(x), time);
+      return w[0] * fault.trace.down_dip(x)[d] + w[1] * normal[d];
     };
     // +1 if the field-1 side of face f of @p cell is the fault's hanging
     // wall, -1 if it is the footwall.

@@ -46,7 +46,7 @@ namespace lithostress
         .in_plane;
     const auto            &p           = values.point;
     const Tensor<1, dim>   t           = sigma * p.normal;
-    const CoulombFriction &law         = faults.friction(p.fault);
+    const CoulombFriction &law         = faults.coulomb_friction(p.fault);
     const double           lithostatic = law.lithostatic_density * law.gravity *
                                faults.overburden_depth(p.fault, centroid);
     return {t * p.normal - lithostatic, t * p.shear};
@@ -62,7 +62,7 @@ namespace lithostress
     const auto  minus = centroid_stress(values.minus_cell, 0, values, u);
     const auto  plus  = centroid_stress(values.plus_cell, 1, values, u);
     const auto &p     = values.point;
-    const CoulombFriction &law = faults.friction(p.fault);
+    const CoulombFriction &law = faults.coulomb_friction(p.fault);
     Reading                r;
     r.shear            = 0.5 * (minus.second + plus.second);
     r.effective_normal = 0.5 * (minus.first + plus.first) +

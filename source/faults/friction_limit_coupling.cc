@@ -12,15 +12,15 @@ namespace lithostress
   template <int dim>
   void
   FrictionLimitCoupling<dim>::reinit(
-    const FaultInterface<dim>                    &faults,
-    const DoFHandler<dim>                        &dof_handler,
-    const FiniteElementSpace<dim>                &fe_space,
-    const NormalContact<dim>                     &contact,
-    const std::vector<CoulombFriction::Response> &responses,
-    const TrilinosWrappers::SparseMatrix         &bulk,
-    const AffineConstraints<double>              &ties,
-    const IndexSet                               &locally_owned,
-    const IndexSet                               &locally_relevant)
+    const FaultInterface<dim>            &faults,
+    const DoFHandler<dim>                &dof_handler,
+    const FiniteElementSpace<dim>        &fe_space,
+    const NormalContact<dim>             &contact,
+    const std::vector<InterfaceResponse> &responses,
+    const TrilinosWrappers::SparseMatrix &bulk,
+    const AffineConstraints<double>      &ties,
+    const IndexSet                       &locally_owned,
+    const IndexSet                       &locally_relevant)
   {
     clear();
     this->contact     = &contact;
@@ -31,15 +31,14 @@ namespace lithostress
     linearised_reactions.assign(responses.size(), 0.);
     faults.for_each_interface_point(
       dof_handler, fe_space, nullptr, [&](const PointValues &values) {
-        const unsigned int               i = values.index;
-        const CoulombFriction::Response &r = responses[i];
+        const unsigned int       i = values.index;
+        const InterfaceResponse &r = responses[i];
         if (!contact.exact(i) || !contact.closed(i) ||
             r.state != SlipState::sliding || r.effective_normal_stress >= 0)
           return;
         // t_s = sign μ (−σ_n,eff): ∂t_s/∂λ = −sign μ.
         const double slope =
-          -(r.shear_traction > 0 ? 1. : -1.) *
-          faults.friction(values.point.fault).friction_coefficient;
+          -(r.shear_traction > 0 ? 1. : -1.) * r.friction_coefficient;
         slopes[i]               = slope;
         linearised_reactions[i] = contact.normal_traction(i);
         terms.clear();

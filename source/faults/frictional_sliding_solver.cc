@@ -8,7 +8,7 @@ namespace lithostress
   FrictionalSlidingSolver<dim>::solve(
     const DiscreteProblem<dim>             &problem,
     const FaultInterface<dim>              &faults,
-    FaultSlipHistory                       &history,
+    FaultHistory                           &history,
     TrilinosWrappers::MPI::Vector          &solution,
     SolverReport                           &report,
     const std::function<void(std::string)> &progress)
@@ -77,7 +77,7 @@ namespace lithostress
     // the caller (or, if not converged, shown).
     for (unsigned int i = 0; i < c.n_points; ++i)
       {
-        history.trial_slip[i]      = c.responses[i].plastic_slip;
+        history.set_trial(i, c.responses[i].history);
         history.trial_states[i]    = c.responses[i].state;
         history.normal_traction[i] = c.responses[i].normal_traction;
       }
@@ -98,21 +98,20 @@ namespace lithostress
       }
     if (!converged)
       {
-        std::ostringstream what;
-        what << std::setprecision(3) << "the frictional sliding on "
-             << faults.frictional_names() << " did not converge in "
-             << parameters.max_iterations << " " << report.solver
-             << " iterations (residual " << c.r_norm / c.f
-             << " of the load, excess "
-             << "shear " << c.excess
-             << " Pa); the last iterate is written out. Raise Faults/Sliding "
-                "solver/Maximum iterations"
-             << (newton ? ""
-                        : ", or change the Convergence factor (raise it "
-                          "while the excess shear falls steadily, lower it "
-                          "where it oscillates near the factor at which the "
-                          "iteration diverges)");
-        throw ComputationError(what.str());
+        std::ostringstream state;
+        state << std::setprecision(3) << "residual " << c.r_norm / c.f
+              << " of the load, excess shear " << c.excess << " Pa";
+        if (newton)
+          throw ComputationError(
+            sliding::newton_method(c).failure_message(state.str()));
+        throw ComputationError(
+          "the frictional sliding on " + faults.frictional_names() +
+          " did not converge in " + std::to_string(parameters.max_iterations) +
+          " thesis iterations (" + state.str() +
+          "); the last iterate is written out. Raise Faults/Sliding "
+          "solver/Maximum iterations, or change the Convergence factor "
+          "(raise it while the excess shear falls steadily, lower it where "
+          "it oscillates near the factor at which the iteration diverges)");
       }
   }
 

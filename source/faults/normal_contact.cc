@@ -97,7 +97,7 @@ namespace lithostress
                            values.reaction_sign != 0 &&
                            faults.has_face_terms(k) && !values.point.at_tip;
         in_contact.push_back(exact);
-        slides.push_back(faults.friction(k).slides);
+        slides.push_back(faults.law(k).nonlinear());
         keys.push_back(values.node[0]);
         // The reaction is read at the finer side's node (on a hanging
         // face whose finer side is the footwall the tied node is the
@@ -186,9 +186,8 @@ namespace lithostress
 
   template <int dim>
   bool
-  NormalContact<dim>::update(
-    const std::vector<CoulombFriction::Response> &responses,
-    const std::vector<double>                    &normal_jumps)
+  NormalContact<dim>::update(const std::vector<InterfaceResponse> &responses,
+                             const std::vector<double>            &normal_jumps)
   {
     std::vector<types::global_dof_index> opening, closing;
     for (unsigned int i = 0; i < keys.size(); ++i)

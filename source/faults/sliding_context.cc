@@ -29,7 +29,7 @@ namespace lithostress
       const Settings                         &settings,
       const DiscreteProblem<dim>             &problem,
       const FaultInterface<dim>              &faults,
-      FaultSlipHistory                       &history,
+      FaultHistory                           &history,
       SolverReport                           &report,
       const std::function<void(std::string)> &progress,
       KeptSlidingOperator<dim>               &kept)
@@ -62,6 +62,7 @@ namespace lithostress
       n_points = distances.size();
       history.reinit(fault_of_point,
                      distances,
+                     faults.history_names(),
                      problem.operator_version >> 32,
                      communicator);
       tangents.resize(n_points);
@@ -129,16 +130,17 @@ namespace lithostress
 
     template <int dim>
     typename SlidingContext<dim>::Law
-    SlidingContext<dim>::stuck_law(const std::vector<double> &slip)
+    SlidingContext<dim>::stuck_law(const HistoryOf &history)
     {
-      return [this, &slip](const PointValues &values,
-                           Tensor<1, dim>    &t,
-                           Tensor<2, dim>    &D) {
-        const auto        &p = values.point;
-        const unsigned int i = values.index;
-        D                    = faults.stuck_tangent(p);
-        t                    = D * values.jump -
-            faults.friction(p.fault).shear_stiffness * slip[i] * p.shear;
+      return [this, history](const PointValues &values,
+                             Tensor<1, dim>    &t,
+                             Tensor<2, dim>    &D) {
+        const auto             &p = values.point;
+        const unsigned int      i = values.index;
+        const InterfaceResponse r = faults.law(p.fault).predictor(
+          FaultInterface<dim>::law_inputs(p, values.jump, history(i)));
+        D           = from_local_frame<dim>(r.tangent, p.shear, p.normal);
+        t           = r.shear_traction * p.shear + r.normal_traction * p.normal;
         tangents[i] = D;
         affine[i]   = t - D * values.jump;
       };
@@ -154,7 +156,7 @@ namespace lithostress
       const Tensor<1, dim> &w = values.jump;
       const unsigned int    i = values.index;
       normal_jumps[i]         = w * p.normal;
-      responses[i]            = respond(values, history.slip[i]);
+      responses[i]            = respond(values, history.committed(i));
       t                       = responses[i].shear_traction * p.shear +
           responses[i].normal_traction * p.normal;
       D = from_local_frame<dim>(responses[i].tangent, p.shear, p.normal);

@@ -80,9 +80,9 @@ namespace lithostress
             const Tensor<1, dim> &w = values.jump;
             const unsigned int    i = values.index;
             // The excess over the limit at the elastic traction.
-            const CoulombFriction     &law = c.faults.friction(p.fault);
-            CoulombFriction::Response &r   = c.responses[i];
-            r                              = c.respond(values, slip[i]);
+            const CoulombFriction &law = c.faults.coulomb_friction(p.fault);
+            InterfaceResponse     &r   = c.responses[i];
+            r = c.respond(values, ArrayView<const double>(&slip[i], 1));
             const double tau = law.shear_stiffness * (w * p.shear - slip[i]);
             const double e   = r.state == SlipState::open ? tau
                                : r.state == SlipState::sliding || held[i]
@@ -129,13 +129,15 @@ namespace lithostress
             if (face.empty())
               first = values.point.position;
             face.push_back(i);
-            c.responses[i] = c.respond(values, slip[i]);
+            c.responses[i] =
+              c.respond(values, ArrayView<const double>(&slip[i], 1));
             if (!values.last_of_pair)
               return;
             const Point<dim> midpoint = 0.5 * (first + values.point.position);
             const auto       r = elements.read(values, midpoint, c.u_ghost);
-            const CoulombFriction &law = c.faults.friction(values.point.fault);
-            const double           limit =
+            const CoulombFriction &law =
+              c.faults.coulomb_friction(values.point.fault);
+            const double limit =
               law.friction_coefficient * std::max(0., -r.effective_normal);
             const bool   over = std::abs(r.shear) > limit;
             const double e =
@@ -164,22 +166,28 @@ namespace lithostress
     solve_by_thesis_iteration(SlidingContext<dim> &c)
     {
       const auto         &settings = c.settings;
-      std::vector<double> slip     = c.history.slip;
-      std::vector<bool>   slid(c.n_points, false), held(c.n_points, false);
+      std::vector<double> slip(c.n_points, 0.);
+      for (unsigned int i = 0; i < c.n_points; ++i)
+        if (c.history.committed(i).size() > 0)
+          slip[i] = c.history.committed(i)[0];
+      std::vector<bool> slid(c.n_points, false), held(c.n_points, false);
       std::unique_ptr<FaultElementStresses<dim>> elements;
       if (settings.element_stresses)
         elements =
           std::make_unique<FaultElementStresses<dim>>(c.fe_space,
                                                       c.problem.stress_model,
                                                       c.faults);
-      bool converged = false;
-      c.set_up(c.stuck_law(slip));
+      bool       converged   = false;
+      const auto thesis_slip = [&slip](const unsigned int i) {
+        return ArrayView<const double>(&slip[i], 1);
+      };
+      c.set_up(c.stuck_law(thesis_slip));
       double first_excess = 0;
       for (c.iteration = 1; c.iteration <= settings.max_iterations;
            ++c.iteration)
         {
           if (c.iteration > 1)
-            c.assemble_rhs(c.stuck_law(slip));
+            c.assemble_rhs(c.stuck_law(thesis_slip));
           c.linear_solve(c.u);
           c.excess =
             elements
@@ -217,9 +225,9 @@ namespace lithostress
             }
         }
       // The residual with the states of the thesis's last iterate.
-      const std::vector<CoulombFriction::Response> thesis = c.responses;
-      c.r_norm    = c.residual_norm(c.u);
-      c.responses = thesis;
+      const std::vector<InterfaceResponse> thesis = c.responses;
+      c.r_norm                                    = c.residual_norm(c.u);
+      c.responses                                 = thesis;
       return converged;
     }
 

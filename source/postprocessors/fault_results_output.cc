@@ -1,5 +1,5 @@
-#include <lithostress/base/input_error.h>
 #include <lithostress/analysis/fault_output.h>
+#include <lithostress/base/input_error.h>
 #include <lithostress/postprocessors/fault_results_output.h>
 #include <lithostress/postprocessors/surface_profile_output.h>
 
@@ -51,7 +51,7 @@ namespace lithostress
                                  const int                   output_index) const
   {
     const std::vector<FaultSample> all = sample_fault(
-      a.faults, a.dof_handler, a.fe_space, a.solution, a.slip_history);
+      a.faults, a.dof_handler, a.fe_space, a.solution, a.fault_history);
     for (unsigned int k = 0; k < a.faults.n_faults(); ++k)
       {
         if (!a.faults.has_face_terms(k))

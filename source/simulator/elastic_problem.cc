@@ -1,9 +1,9 @@
 #include <deal.II/dofs/dof_tools.h>
 
+#include <lithostress/analysis/force_balance.h>
 #include <lithostress/assembly/elastic_assembler.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/interruption.h>
-#include <lithostress/analysis/force_balance.h>
 #include <lithostress/refinement/dual_solutions.h>
 #include <lithostress/simulator/elastic_problem.h>
 
@@ -230,14 +230,14 @@ namespace lithostress
       {
         sliding_solver.solve(problem,
                              model.faults,
-                             slip_history,
+                             interface_history,
                              owned_solution,
                              stats.solver,
                              [&](const std::string &line) {
                                log << line << std::endl;
                              });
         if (commit)
-          slip_history.commit();
+          interface_history.commit();
       }
     catch (const ComputationError &)
       {

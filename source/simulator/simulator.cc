@@ -278,7 +278,7 @@ namespace lithostress
                            loads,
                            prescribed_displacement,
                            faults,
-                           problem->fault_slip(),
+                           problem->fault_history(),
                            griffith,
                            reference.get(),
                            problem->solution(),

@@ -280,16 +280,15 @@ namespace lithostress
     parts.problem.triangulation().save(directory + "/mesh");
     LoopState state;
     state.predictor_times = predictor.times();
-    for (const auto &r : parts.problem.fault_slip().gather(comm))
-      state.fault_slip.insert(state.fault_slip.end(), r.begin(), r.end());
-    state.step          = step;
-    state.linear_solves = linear_solves;
-    state.time          = t;
-    state.dt            = dt;
-    state.strain_scale  = strain_scale;
-    state.stress_scale  = stress_scale;
-    state.previous_dt   = parts.creep.previous_step_length();
-    state.steps         = steps;
+    state.fault_history   = parts.problem.fault_history().gather(comm);
+    state.step            = step;
+    state.linear_solves   = linear_solves;
+    state.time            = t;
+    state.dt              = dt;
+    state.strain_scale    = strain_scale;
+    state.stress_scale    = stress_scale;
+    state.previous_dt     = parts.creep.previous_step_length();
+    state.steps           = steps;
     parts.postprocessors.save(state.postprocessors);
     on_all_ranks(comm, [&]() {
       if (a.root())
@@ -321,14 +320,8 @@ namespace lithostress
     strain_scale                = state.strain_scale;
     stress_scale                = state.stress_scale;
     steps                       = state.steps;
-    std::vector<FaultSlipHistory::Record> fault_slip(state.fault_slip.size() /
-                                                     4);
-    for (unsigned int k = 0; k < fault_slip.size(); ++k)
-      for (unsigned int c = 0; c < 4; ++c)
-        fault_slip[k][c] = state.fault_slip[4 * k + c];
-
     // The mesh and the fields, in the order they were attached.
-    problem.fault_slip().restore(fault_slip);
+    problem.fault_history().restore(state.fault_history);
     problem.triangulation().load(directory + "/mesh");
     parts.stress_model.set_time_step(0, settings.theta);
     problem.setup(t);

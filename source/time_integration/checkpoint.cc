@@ -64,7 +64,7 @@ namespace lithostress
   {
     /** The first line of state.txt: the format of what follows. */
     // 4: the model text holds each material's Rheology (2026-12-01).
-    const std::string state_format = "lithostress-checkpoint 4";
+    const std::string state_format = "lithostress-checkpoint 5";
   } // namespace
 
   void

@@ -72,7 +72,7 @@ expected = {
     "output_time_after_end": "Time stepping/Output times>: the time 4000 years is outside [0, End time]",
     "resume_without_checkpoint": "Time stepping/Resume>: there is no checkpoint",
     "resume_other_model": "checkpoint-000007 belongs to another model",
-    "resume_old_checkpoint": "checkpoint-000007 was written by another version of lithostress (format <lithostress-checkpoint 3>",
+    "resume_old_checkpoint": "checkpoint-000007 was written by another version of lithostress (format <lithostress-checkpoint 4>",
     "fault_not_named": "Faults/Names>: the geometry has the fault <fault>: name it here",
     "fault_outside_box": "Geometry/Layered box/Fault surface x>: the fault must cross the box from the top to the base",
     "friction_negative": "Faults/fault/Friction coefficient>: must be at least 0, got -0.1",
@@ -143,7 +143,7 @@ def run_case(name, ranks):
         with open(os.path.join(earlier, "checkpoint.current"), "w") as f:
             f.write("checkpoint-000007\n")
         with open(os.path.join(earlier, "checkpoint-000007", "state.txt"), "w") as f:
-            f.write("lithostress-checkpoint 3\n22 serialization::archive 19 0 0\n")
+            f.write("lithostress-checkpoint 4\n22 serialization::archive 19 0 0\n")
         with open(os.path.join(earlier, "checkpoint-000007", "model.prm"), "w") as f:
             f.write(open(os.path.join(os.path.dirname(HERE), "viscoelastic", "maxwell_block.prm")).read())
     if name == "resume_other_model":

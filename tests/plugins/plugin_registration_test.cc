@@ -1,8 +1,9 @@
 // Unit test of the plug-in registry (base/plugin_registry.h) through the
-// whole program: a rock law and a postprocessor defined and registered in
-// this file only, each by its one registration line, are chosen and called
-// by a .prm run through the program's own path (ParameterFile::read, the
-// Simulator's constructor, run()), exactly as app/main.cc runs a model.
+// whole program: a rock law, a fault law and a postprocessor defined and
+// registered in this file only, each by its one registration line, are
+// chosen and called by .prm runs through the program's own path
+// (ParameterFile::read, the Simulator's constructor, run()), exactly as
+// app/main.cc runs a model.
 //
 // The rock law, `scaled elasticity`, is the material's isotropic
 // elasticity with its stiffness multiplied by an entry of its own,
@@ -18,12 +19,30 @@
 // patch test. And the registry lists the law where the documentation reads
 // it: `--print-parameters` shows it and its own entry.
 //
+//
+// The fault law, `stiffening spring`, is nonlinear: t_s = k_s w_s + c w_s³,
+// t_n = k_n w_n, with its own entry `Cubic stiffness` c, and it keeps a
+// named history of two components, the largest |w_s| and |t_s| it has
+// carried. The patch test is tests/faults/elastic_fault_shear.prm's: a
+// block with a vertical fault, the left side fixed and a uniform shear
+// stress tau on the other sides. The fault carries tau at every point, so
+// its slip is the real root of k_s w + c w³ = tau, the same at every point:
+// with k_s = 1e7 Pa/m, c = 1e7 Pa/m³ and tau = 1e7 Pa, w + w³ = 1 m, w =
+// 0.6823278 m (a linear spring would slip 1 m). The sliding solver's Newton
+// method solves it to a residual of 1e-12 of the load, so slip and history
+// agree with the root to 1e-8 relative (the error is the solver tolerances
+// amplified by the block's conditioning, 4e-11 measured; a linear spring's
+// slip is 47 % off). The
+// postprocessor reads the committed history of the toy law at every
+// interface point: its two components must be |w| and tau.
+//
 // Prints one "ok ..." or "FAIL ..." line per check and returns non-zero on
 // a failure.
 
 #include <deal.II/base/mpi.h>
 
 #include <lithostress/base/parameter_file.h>
+#include <lithostress/faults/interface_law.h>
 #include <lithostress/materials/elastic_rheology.h>
 #include <lithostress/postprocessors/postprocessor.h>
 #include <lithostress/simulator/simulator.h>
@@ -78,12 +97,97 @@ namespace
     }
   };
 
-  /** What the toy postprocessor saw: the cycles it was called for and the
-   * largest |u_x| of the solution at the last one. */
+  /** A nonlinear spring with its own history: t_s = k_s w_s + c w_s³,
+   * t_n = k_n w_n; the history is the largest |w_s| and |t_s| so far. */
+  template <int dim>
+  class StiffeningSpring : public InterfaceLaw<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry("Cubic stiffness",
+                        "0",
+                        Patterns::Double(0),
+                        "stiffening spring: c [Pa/m^3].");
+    }
+
+    void
+    parse_parameters(ParameterHandler &prm,
+                     const std::string &,
+                     const GravityField &,
+                     const double) override
+    {
+      k_s = prm.get_double("Shear stiffness");
+      k_n = prm.get_double("Normal stiffness");
+      c   = prm.get_double("Cubic stiffness");
+    }
+
+    std::vector<std::string>
+    history_names() const override
+    {
+      return {"peak slip", "peak shear traction"};
+    }
+
+    bool
+    has_face_terms() const override
+    {
+      return true;
+    }
+
+    bool
+    nonlinear() const override
+    {
+      return true;
+    }
+
+    Tensor<2, 2>
+    stuck_stiffness() const override
+    {
+      Tensor<2, 2> K;
+      K[0][0] = k_s;
+      K[1][1] = k_n;
+      return K;
+    }
+
+    InterfaceResponse
+    predictor(const InterfaceLawInputs &in) const override
+    {
+      InterfaceResponse r;
+      r.tangent         = stuck_stiffness();
+      r.shear_traction  = k_s * in.shear_jump;
+      r.normal_traction = k_n * in.normal_jump;
+      r.history.assign(in.history.begin(), in.history.end());
+      return r;
+    }
+
+    InterfaceResponse
+    evaluate(const InterfaceLawInputs &in) const override
+    {
+      const double      w = in.shear_jump;
+      InterfaceResponse r;
+      r.shear_traction  = k_s * w + c * w * w * w;
+      r.normal_traction = k_n * in.normal_jump;
+      r.tangent[0][0]   = k_s + 3 * c * w * w;
+      r.tangent[1][1]   = k_n;
+      r.history         = {std::max(in.history[0], std::abs(w)),
+                           std::max(in.history[1], std::abs(r.shear_traction))};
+      return r;
+    }
+
+  private:
+    double k_s = 0, k_n = 0, c = 0;
+  };
+
+  /** What the toy postprocessor saw: the cycles it was called for, the
+   * largest |u_x| of the solution at the last one, and the faults'
+   * committed history there (its names and each point's values). */
   struct Probe
   {
-    std::vector<unsigned int> cycles;
-    double                    largest_u_x = 0;
+    std::vector<unsigned int>        cycles;
+    double                           largest_u_x = 0;
+    std::vector<std::string>         history_names;
+    std::vector<std::vector<double>> history;
   } probe;
 
   template <int dim>
@@ -103,6 +207,16 @@ namespace
     {
       probe.cycles.push_back(cycle);
       probe.largest_u_x = access.solution.linfty_norm();
+      probe.history.clear();
+      if (access.faults.active())
+        {
+          probe.history_names = access.faults.law(0).history_names();
+          for (unsigned int i = 0; i < access.fault_history.size(); ++i)
+            {
+              const auto h = access.fault_history.committed(i);
+              probe.history.emplace_back(h.begin(), h.end());
+            }
+        }
     }
   };
 } // namespace
@@ -110,6 +224,10 @@ namespace
 LITHOSTRESS_REGISTER_RHEOLOGY(ScaledElasticity,
                               "scaled elasticity",
                               "a test law: elasticity times Stiffness factor")
+LITHOSTRESS_REGISTER_INTERFACE_LAW(StiffeningSpring,
+                                   "stiffening spring",
+                                   "a test law: a cubic spring",
+                                   1000)
 LITHOSTRESS_REGISTER_POSTPROCESSOR(CycleProbe,
                                    "cycle probe",
                                    "a test probe of each cycle",
@@ -170,6 +288,83 @@ namespace
     return prm.str();
   }
 
+  const double k_s = 1e7, cubic = 1e7, tau = 1e7;
+
+  /** The fault's patch test (tests/faults/elastic_fault_shear.prm with the
+   * test's fault law): two cycles of global refinement. */
+  std::string
+  fault_model(const std::string &directory)
+  {
+    std::ostringstream prm;
+    prm << "set Output directory = " << directory << "\n"
+        << "subsection Geometry\n"
+           "  set Model = layered box\n"
+           "  set Length unit = km\n"
+           "  subsection Layered box\n"
+           "    set Width = 10\n"
+           "    set Layer interfaces = 0, -10\n"
+           "    set Layer names = rock\n"
+           "    set Cells per layer = 4\n"
+           "    set Cells across = 4\n"
+           "    set Fault surface x = 5\n"
+           "    set Fault dip = 90\n"
+           "    set Fault dips towards = right\n"
+           "  end\n"
+           "end\n"
+           "subsection Faults\n"
+           "  set Names = fault\n"
+           "  subsection fault\n"
+           "    set Interface law = stiffening spring\n"
+        << "    set Shear stiffness = " << k_s
+        << "\n    set Normal stiffness = " << k_s
+        << "\n    set Cubic stiffness = " << cubic
+        << "\n  end\n"
+           "  subsection Sliding solver\n"
+           "    set Residual tolerance = 1e-12\n"
+           "    set Excess shear tolerance = 1\n"
+           "  end\n"
+           "end\n"
+           "subsection Materials\n"
+           "  set Names = rock\n"
+           "  subsection rock\n"
+           "    set Young's modulus = 0.85e11\n"
+           "    set Poisson's ratio = 0.25\n"
+           "  end\n"
+           "end\n"
+           "subsection Boundary conditions\n"
+           "  set Prescribed displacement parts = left\n"
+           "  subsection left\n"
+           "    set x = 0\n"
+           "    set y = 0\n"
+           "  end\n"
+           "end\n"
+           "subsection Loads\n"
+           "  subsection Tractions\n"
+           "    set Boundary parts = top, base, right\n"
+        << "    subsection top\n      set Shear traction = " << tau
+        << "\n    end\n    subsection base\n      set Shear traction = " << tau
+        << "\n    end\n    subsection right\n      set Shear traction = "
+        << -tau
+        << "\n    end\n"
+           "  end\n"
+           "end\n"
+           "subsection Mesh refinement\n"
+           "  set Number of cycles = 2\n"
+           "  set Strategy = global\n"
+           "end\n"
+           "subsection Solver\n"
+           "  set Relative tolerance = 1e-12\n"
+           "end\n"
+           "subsection Output\n"
+           "  set Write ParaView files = false\n"
+           "  set Force balance = false\n"
+           "  subsection Figures\n"
+           "    set Enabled = false\n"
+           "  end\n"
+           "end\n";
+    return prm.str();
+  }
+
   void
   declare(ParameterHandler &prm, ParameterHandler *first_pass)
   {
@@ -197,6 +392,65 @@ namespace
     return rows;
   }
 } // namespace
+
+/** The fault law's patch test (see the head of this file). */
+void
+fault_patch_test(const bool root)
+{
+  check(InterfaceLawRegistry<2>::has("stiffening spring") &&
+          InterfaceLawRegistry<2>::has("frictional") &&
+          InterfaceLawRegistry<2>::has("locked"),
+        "the registry holds the built-in fault laws and the test's own");
+  const std::string directory = "output_plugin_registration_fault";
+  const std::string file      = "plugin_registration_fault.prm";
+  if (root)
+    {
+      std::filesystem::remove_all(directory);
+      std::ofstream(file) << fault_model(directory);
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  probe = Probe();
+  {
+    ParameterHandler prm;
+    ParameterFile::read(file, {}, declare, prm);
+    Simulator<2> simulator(MPI_COMM_WORLD, prm);
+    simulator.run();
+  }
+  // The real root of k_s w + c w³ = tau by Newton's method.
+  double w = tau / k_s;
+  for (unsigned int i = 0; i < 50; ++i)
+    w -= (k_s * w + cubic * w * w * w - tau) / (k_s + 3 * cubic * w * w);
+  double worst = probe.history.empty() ? 1.0 : 0.0;
+  for (const auto &h : probe.history)
+    worst = std::max({worst,
+                      h.size() == 2 ? 0. : 1.,
+                      std::abs(h[0] - w) / w,
+                      std::abs(h[1] - tau) / tau});
+  worst = Utilities::MPI::max(worst, MPI_COMM_WORLD);
+  {
+    std::ostringstream what;
+    what << "the fault law's named history (" << probe.history_names.size()
+         << " components) holds |w| = " << w << " m and tau at every point ("
+         << probe.history.size() << " points, largest relative error "
+         << std::scientific << worst << ")";
+    check(probe.history_names ==
+              std::vector<std::string>{"peak slip", "peak shear traction"} &&
+            worst < 1e-8,
+          what.str());
+  }
+  if (root)
+    {
+      const auto rows  = read_csv(directory + "/fault.csv");
+      double     error = rows.empty() ? 1.0 : 0.0;
+      for (const auto &row : rows)
+        error = std::max(error, std::abs(std::abs(row.at("slip")) - w) / w);
+      std::ostringstream what;
+      what << "fault.csv's slip is the root of k_s w + c w^3 = tau ("
+           << rows.size() << " rows, largest relative error " << std::scientific
+           << error << "; a linear spring: 1 m)";
+      check(rows.size() > 8 && error < 1e-8, what.str());
+    }
+}
 
 int
 main(int argc, char *argv[])
@@ -264,5 +518,6 @@ main(int argc, char *argv[])
            << worst << ")";
       check(rows.size() == 2 && worst < 1e-9, what.str());
     }
+  fault_patch_test(root);
   return n_failed == 0 ? 0 : 1;
 }

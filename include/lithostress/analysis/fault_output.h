@@ -4,11 +4,11 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <lithostress/discretization/finite_element_space.h>
-#include <lithostress/faults/fault_interface.h>
-#include <lithostress/faults/fault_slip_history.h>
-#include <lithostress/materials/stress_model.h>
 #include <lithostress/analysis/griffith_failure.h>
+#include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/faults/fault_history.h>
+#include <lithostress/faults/fault_interface.h>
+#include <lithostress/materials/stress_model.h>
 
 #include <cmath>
 #include <string>
@@ -56,7 +56,7 @@ namespace lithostress
                const DoFHandler<dim>               &dof_handler,
                const FiniteElementSpace<dim>       &fe_space,
                const TrilinosWrappers::MPI::Vector &solution,
-               const FaultSlipHistory              &history);
+               const FaultHistory                  &history);
 
   /** Write fault.csv: `s,x,y,slip,opening,shear_traction,normal_traction,
    * state` (SI units). */

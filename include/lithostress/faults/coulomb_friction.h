@@ -3,26 +3,13 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <lithostress/faults/interface_law.h>
+
 #include <string>
 
 namespace lithostress
 {
   using namespace dealii;
-
-  /** The state of a point of a frictional fault. */
-  enum class SlipState
-  {
-    /** |τ| < τ_F: the interface deforms elastically. */
-    stuck,
-    /** |τ| = τ_F: the fault slides, the slip grows. */
-    sliding,
-    /** σ_n,eff ≥ 0: the fault is in tension and carries no shear. */
-    open
-  };
-
-  /** "stuck", "sliding" or "open" (the `state` column of fault.csv). */
-  std::string
-  to_string(const SlipState state);
 
   /**
    * Coulomb friction on a fault as an elastic–perfectly-plastic interface

@@ -13,6 +13,7 @@
 #include <lithostress/base/gravity_field.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/faults/coulomb_friction.h>
+#include <lithostress/faults/interface_law.h>
 #include <lithostress/geometry/fault_trace.h>
 
 #include <array>
@@ -83,15 +84,6 @@ namespace lithostress
   class FaultInterface
   {
   public:
-    /** The interface law of a fault. */
-    enum class Law
-    {
-      locked,
-      elastic,
-      frictional,
-      prescribed_slip
-    };
-
     /** A point of the interface quadrature (on the finer side's face). */
     struct InterfacePoint
     {
@@ -124,7 +116,7 @@ namespace lithostress
     struct PointValues
     {
       /** The point's number on this rank (the order of
-       * interface_quadrature(); FaultSlipHistory's index). */
+       * interface_quadrature(); FaultHistory's index). */
       unsigned int index;
       /** The point, its fault and the fault's frame there. */
       const InterfacePoint &point;
@@ -303,7 +295,7 @@ namespace lithostress
     double
     overburden_depth(const unsigned int k, const Point<dim> &position) const
     {
-      return faults[k].overburden_from_sea_level
+      return faults[k].law->overburden_from_sea_level()
                ? -position[1]
                : faults[k].trace.depth(position);
     }
@@ -312,7 +304,7 @@ namespace lithostress
     bool
     exact_contact(const unsigned int k) const
     {
-      return faults[k].friction.exact_contact;
+      return faults[k].law->exact_contact();
     }
 
     /** Whether a fault adds face terms to the matrix (an elastic or
@@ -324,20 +316,31 @@ namespace lithostress
     bool
     has_face_terms(const unsigned int k) const
     {
-      return faults[k].law == Law::elastic || faults[k].law == Law::frictional;
+      return faults[k].law->has_face_terms();
     }
 
-    /** Whether a fault slides by Coulomb friction (a nonlinear law). */
+    /** Whether a fault's law is nonlinear (slides). */
     bool
     frictional() const;
 
-    /** The interface law of fault @p k as a CoulombFriction (an elastic
-     * fault's never slides). */
-    const CoulombFriction &
-    friction(const unsigned int k) const
+    /** The interface law of fault @p k. */
+    const InterfaceLaw<dim> &
+    law(const unsigned int k) const
     {
-      return faults[k].friction;
+      return *faults[k].law;
     }
+
+    /** The names of the history each fault's law keeps, by fault
+     * (FaultHistory::reinit()). */
+    std::vector<std::vector<std::string>>
+    history_names() const;
+
+    /** The Coulomb friction of fault @p k (an elastic or frictional law),
+     * for the thesis's iteration and FSHEAR's element stresses (thesis
+     * §5.5), which are defined for it alone; a ComputationError for
+     * another law. */
+    const CoulombFriction &
+    coulomb_friction(const unsigned int k) const;
 
     /** The stiffness of the law at @p point while it sticks (the elastic
      * law): D = k_s s⊗s + k_n n⊗n, in the (x, y) frame; k_s s⊗s alone in
@@ -345,10 +348,25 @@ namespace lithostress
     Tensor<2, dim>
     stuck_tangent(const InterfacePoint &point) const
     {
-      const CoulombFriction &law = friction(point.fault);
-      return law.shear_stiffness * outer_product(point.shear, point.shear) +
-             (law.exact_contact ? 0. : law.normal_stiffness) *
-               outer_product(point.normal, point.normal);
+      const Tensor<2, 2> K = faults[point.fault].law->stuck_stiffness();
+      return K[0][0] * outer_product(point.shear, point.shear) +
+             K[1][1] * outer_product(point.normal, point.normal);
+    }
+
+    /** The inputs of fault @p point's law at @p point with the jump
+     * @p jump (in the (x, y) frame) and the history @p history. */
+    static InterfaceLawInputs
+    law_inputs(const InterfacePoint          &point,
+               const Tensor<1, dim>          &jump,
+               const ArrayView<const double> &history)
+    {
+      InterfaceLawInputs in;
+      in.shear_jump       = jump * point.shear;
+      in.normal_jump      = jump * point.normal;
+      in.overburden_depth = point.overburden_depth;
+      in.welded           = point.at_tip;
+      in.history          = history;
+      return in;
     }
 
     /** The trace of fault @p k. */
@@ -405,7 +423,7 @@ namespace lithostress
                              const PointVisitor &visitor) const;
 
     /** This rank's interface points, in the order in which
-     * for_each_interface_point() numbers them (FaultSlipHistory's
+     * for_each_interface_point() numbers them (FaultHistory's
      * points; thesis §5.5). */
     std::vector<InterfacePoint>
     interface_quadrature(const DoFHandler<dim>         &dof_handler,
@@ -415,16 +433,10 @@ namespace lithostress
     struct Fault
     {
       FaultTrace trace;
-      Law        law = Law::locked;
-      /** k_s, k_n per unit fault area [Pa/m] (elastic and frictional
-       * laws), μ and the effective normal stress's terms (frictional). */
-      CoulombFriction friction;
-      /** Whether the overburden's depth is measured from y = 0 (sea level)
-       * rather than from the fault's upper end (frictional). */
-      bool overburden_from_sea_level = false;
-      /** Prescribed slip: slip and opening [m] as functions of the
-       * distance s along the fault [m] and the time t [s]. */
-      std::shared_ptr<FunctionParser<1>> slip, opening;
+      /** Its interface law (`Interface law`). */
+      std::shared_ptr<InterfaceLaw<dim>> law;
+      /** The law's name, for messages. */
+      std::string law_name;
     };
 
     /** What for_each_face_pair() calls per face pair: (fault, minus cell,

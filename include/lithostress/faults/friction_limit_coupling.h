@@ -54,15 +54,15 @@ namespace lithostress
      * only).
      */
     void
-    reinit(const FaultInterface<dim>                    &faults,
-           const DoFHandler<dim>                        &dof_handler,
-           const FiniteElementSpace<dim>                &fe_space,
-           const NormalContact<dim>                     &contact,
-           const std::vector<CoulombFriction::Response> &responses,
-           const TrilinosWrappers::SparseMatrix         &bulk,
-           const AffineConstraints<double>              &ties,
-           const IndexSet                               &locally_owned,
-           const IndexSet                               &locally_relevant);
+    reinit(const FaultInterface<dim>            &faults,
+           const DoFHandler<dim>                &dof_handler,
+           const FiniteElementSpace<dim>        &fe_space,
+           const NormalContact<dim>             &contact,
+           const std::vector<InterfaceResponse> &responses,
+           const TrilinosWrappers::SparseMatrix &bulk,
+           const AffineConstraints<double>      &ties,
+           const IndexSet                       &locally_owned,
+           const IndexSet                       &locally_relevant);
 
     /** No term (no point slides in contact, or the tangent takes the
      * reactions as given). */

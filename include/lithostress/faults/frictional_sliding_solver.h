@@ -4,8 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <lithostress/faults/fault_history.h>
 #include <lithostress/faults/fault_interface.h>
-#include <lithostress/faults/fault_slip_history.h>
 #include <lithostress/solvers/linear_solver.h>
 
 #include <functional>
@@ -194,7 +194,7 @@ namespace lithostress
     void
     solve(const DiscreteProblem<dim>             &problem,
           const FaultInterface<dim>              &faults,
-          FaultSlipHistory                       &history,
+          FaultHistory                           &history,
           TrilinosWrappers::MPI::Vector          &solution,
           SolverReport                           &report,
           const std::function<void(std::string)> &progress);

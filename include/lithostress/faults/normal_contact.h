@@ -40,7 +40,7 @@ namespace lithostress
    * fault's nodes stay closed. The open set is the same on every rank.
    *
    * The per-point data follow FaultInterface::for_each_interface_point()'s
-   * numbering (FaultSlipHistory's points).
+   * numbering (FaultHistory's points).
    */
   template <int dim>
   class NormalContact
@@ -146,8 +146,8 @@ namespace lithostress
      * with σ_n,eff > 0 open, open points with w_n < 0 close. Returns
      * whether the set changed (the same on every rank). */
     bool
-    update(const std::vector<CoulombFriction::Response> &responses,
-           const std::vector<double>                    &normal_jumps);
+    update(const std::vector<InterfaceResponse> &responses,
+           const std::vector<double>            &normal_jumps);
 
     /**
      * Before the first linearisation from a given iterate (a coarser

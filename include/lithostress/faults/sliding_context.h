@@ -23,6 +23,7 @@
 #include <lithostress/faults/frictional_sliding_solver.h>
 #include <lithostress/faults/normal_contact.h>
 #include <lithostress/solvers/amg_solver.h>
+#include <lithostress/solvers/newton_method.h>
 #include <lithostress/solvers/rigid_body_modes.h>
 #include <lithostress/solvers/sparse_cholesky.h>
 #include <lithostress/solvers/two_field_multigrid.h>
@@ -142,45 +143,46 @@ namespace lithostress
       SlidingContext(const Settings                         &settings,
                      const DiscreteProblem<dim>             &problem,
                      const FaultInterface<dim>              &faults,
-                     FaultSlipHistory                       &history,
+                     FaultHistory                           &history,
                      SolverReport                           &report,
                      const std::function<void(std::string)> &progress,
                      KeptSlidingOperator<dim>               &kept);
 
-      /** The elastic law with the slip @p slip per point (thesis §5.5: the
-       * fault stays elastic, its slip moves the springs' rest length),
-       * recorded as the law the next solve linearises. */
-      Law
-      stuck_law(const std::vector<double> &slip);
+      /** Each point's history, by its index: the committed one, or the
+       * thesis iteration's slip. */
+      using HistoryOf = std::function<ArrayView<const double>(unsigned int)>;
 
-      /** The Coulomb law's return mapping from the committed slip at the
-       * point @p values (CoulombFriction::respond), its response kept. */
+      /** The laws' elastic predictor (InterfaceLaw::predictor()) with the
+       * history @p history per point (thesis §5.5: the fault stays
+       * elastic, its slip moves the springs' rest length), recorded as the
+       * law the next solve linearises. */
+      Law
+      stuck_law(const HistoryOf &history);
+
+      /** The laws' return mapping from the committed history at the point
+       * @p values, its response kept. */
       void
       return_mapping(const PointValues &values,
                      Tensor<1, dim>    &t,
                      Tensor<2, dim>    &D);
 
-      /** The Coulomb law at the point @p values from the slip @p p_old:
-       * CoulombFriction::respond(), or respond_in_contact() with the
-       * point's reaction in exact contact. */
-      CoulombFriction::Response
-      respond(const PointValues &values, const double p_old) const
+      /** The law of the point @p values evaluated from the history
+       * @p history (InterfaceLaw::evaluate()), with the point's reaction
+       * in exact contact. */
+      InterfaceResponse
+      respond(const PointValues             &values,
+              const ArrayView<const double> &history) const
       {
-        const auto            &p   = values.point;
-        const Tensor<1, dim>  &w   = values.jump;
-        const CoulombFriction &law = faults.friction(p.fault);
-        if (p.at_tip)
-          return law.welded(w * p.shear, p_old);
-        if (contact && contact->exact(values.index))
-          return law.respond_in_contact(w * p.shear,
-                                        contact->normal_traction(values.index),
-                                        contact->closed(values.index),
-                                        p_old,
-                                        p.overburden_depth);
-        return law.respond(w * p.shear,
-                           w * p.normal,
-                           p_old,
-                           p.overburden_depth);
+        const auto        &p = values.point;
+        InterfaceLawInputs in =
+          FaultInterface<dim>::law_inputs(p, values.jump, history);
+        if (!p.at_tip && contact && contact->exact(values.index))
+          {
+            in.in_contact       = true;
+            in.closed           = contact->closed(values.index);
+            in.contact_traction = contact->normal_traction(values.index);
+          }
+        return faults.law(p.fault).evaluate(in);
       }
 
       /** Exact contact: the normal tractions at @p owned, from the residual
@@ -367,7 +369,7 @@ namespace lithostress
       const Settings                         &settings;
       const DiscreteProblem<dim>             &problem;
       const FaultInterface<dim>              &faults;
-      FaultSlipHistory                       &history;
+      FaultHistory                           &history;
       SolverReport                           &report;
       const std::function<void(std::string)> &progress;
       const DoFHandler<dim>                  &dof_handler;
@@ -378,9 +380,9 @@ namespace lithostress
       unsigned int                            n_points = 0;
       // The law each solve linearised (t = D w + c per point) and the
       // return mapping's response at the last evaluated iterate.
-      std::vector<Tensor<2, dim>>            tangents;
-      std::vector<Tensor<1, dim>>            affine;
-      std::vector<CoulombFriction::Response> responses;
+      std::vector<Tensor<2, dim>>    tangents;
+      std::vector<Tensor<1, dim>>    affine;
+      std::vector<InterfaceResponse> responses;
       /** w_n at each point at the last evaluated iterate. */
       std::vector<double> normal_jumps;
       /** The states at the last states_changed(). */
@@ -515,6 +517,12 @@ namespace lithostress
     template <int dim>
     bool
     solve_by_newton(SlidingContext<dim> &c);
+
+    /** The Newton method of the sliding on @p c's faults: its settings
+     * from c.settings, its messages naming them. */
+    template <int dim>
+    NewtonMethod<TrilinosWrappers::MPI::Vector>
+    newton_method(const SlidingContext<dim> &c);
 
     /** The thesis's iteration (§5.5, FSHEAR): true if it converged. */
     template <int dim>

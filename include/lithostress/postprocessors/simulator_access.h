@@ -7,15 +7,15 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <lithostress/analysis/convergence_study.h>
+#include <lithostress/analysis/griffith_failure.h>
 #include <lithostress/base/run_log.h>
 #include <lithostress/boundary_conditions/prescribed_displacement.h>
 #include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/faults/fault_history.h>
 #include <lithostress/faults/fault_interface.h>
-#include <lithostress/faults/fault_slip_history.h>
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/stress_model.h>
-#include <lithostress/analysis/convergence_study.h>
-#include <lithostress/analysis/griffith_failure.h>
 #include <lithostress/reference_solutions/reference_solution.h>
 #include <lithostress/solvers/linear_solver.h>
 
@@ -53,10 +53,10 @@ namespace lithostress
   template <int dim>
   struct SimulatorAccess
   {
-    MPI_Comm                                         communicator;
-    const std::string                               &output_directory;
-    RunLog                                          &log;
-    TimerOutput                                     &timer;
+    MPI_Comm           communicator;
+    const std::string &output_directory;
+    RunLog            &log;
+    TimerOutput       &timer;
     /** Metres per input length unit, and the unit's name. */
     const double                                     length_scale;
     const std::string                                length_unit;
@@ -69,17 +69,17 @@ namespace lithostress
     const LoadCollection<dim>                       &loads;
     const PrescribedDisplacement<dim>               &prescribed_displacement;
     const FaultInterface<dim>                       &faults;
-    const FaultSlipHistory                          &slip_history;
+    const FaultHistory                              &fault_history;
     const GriffithFailure                           &griffith;
     /** The exact solution of the experiment, or nullptr. */
-    const ReferenceSolution<dim>                    *reference;
+    const ReferenceSolution<dim> *reference;
     /** The present solution (ghosted). */
-    const TrilinosWrappers::MPI::Vector             &solution;
-    const CycleStatistics                           &statistics;
+    const TrilinosWrappers::MPI::Vector &solution;
+    const CycleStatistics               &statistics;
     /** The refinement cycles' table (DoFs, errors, point values, goals). */
-    const ConvergenceStudy                          &convergence_study;
+    const ConvergenceStudy &convergence_study;
     /** The wall clock of the whole run. */
-    const Timer                                     &wall_clock;
+    const Timer &wall_clock;
 
     /** Whether this is the rank that writes files. */
     bool

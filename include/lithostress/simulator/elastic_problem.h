@@ -11,8 +11,8 @@
 #include <lithostress/boundary_conditions/prescribed_displacement.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
+#include <lithostress/faults/fault_history.h>
 #include <lithostress/faults/fault_interface.h>
-#include <lithostress/faults/fault_slip_history.h>
 #include <lithostress/faults/frictional_sliding_solver.h>
 #include <lithostress/loads/load_collection.h>
 #include <lithostress/materials/stress_model.h>
@@ -94,7 +94,7 @@ namespace lithostress
     void
     commit_slip()
     {
-      slip_history.commit();
+      interface_history.commit();
     }
 
     /**
@@ -113,7 +113,7 @@ namespace lithostress
     void
     reset_slip()
     {
-      slip_history = FaultSlipHistory();
+      interface_history = FaultHistory();
     }
 
     /** The discrete problem for the solvers (the solution's and the
@@ -170,16 +170,16 @@ namespace lithostress
       return predictor;
     }
 
-    FaultSlipHistory &
-    fault_slip()
+    FaultHistory &
+    fault_history()
     {
-      return slip_history;
+      return interface_history;
     }
 
-    const FaultSlipHistory &
-    fault_slip() const
+    const FaultHistory &
+    fault_history() const
     {
-      return slip_history;
+      return interface_history;
     }
 
     const LinearSolver<dim> &
@@ -245,9 +245,9 @@ namespace lithostress
                       SolutionTransfer<dim, TrilinosWrappers::MPI::Vector>>
       solution_transfer;
     /** The frictional faults' accumulated slip (their history). */
-    FaultSlipHistory slip_history;
-    CycleStatistics  stats;
-    bool             keep_setup = false;
+    FaultHistory    interface_history;
+    CycleStatistics stats;
+    bool            keep_setup = false;
     /** Counts the meshes set up. */
     unsigned long long mesh_version = 0;
     /** The mesh the loads' mesh integrals were computed on. */

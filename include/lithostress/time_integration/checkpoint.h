@@ -40,8 +40,8 @@ namespace lithostress
 
   /**
    * The visco-elastic loop's state besides the mesh and the fields: the
-   * time, the step control, the rows written so far, the faults' slip
-   * along them (FaultSlipHistory records, flattened) and the
+   * time, the step control, the rows written so far, the faults' history
+   * along them (FaultHistory::gather()'s records) and the
    * postprocessors' named state.
    */
   struct LoopState
@@ -51,7 +51,7 @@ namespace lithostress
     /** The length of the last accepted step (BDF2's c_{n-1}). */
     double                             previous_dt = 0;
     std::vector<StepRecord>            steps;
-    std::vector<double>                fault_slip;
+    std::vector<double>                fault_history;
     std::map<std::string, std::string> postprocessors;
     /** The times of the solutions the SolutionPredictor knew, whose
      * vectors are attached to the mesh after the displacement (version 1;
@@ -64,7 +64,7 @@ namespace lithostress
     serialize(Archive &archive, const unsigned int version)
     {
       archive &step &linear_solves &time &dt &strain_scale &stress_scale
-        &previous_dt &steps &fault_slip &postprocessors;
+        &previous_dt &steps &fault_history &postprocessors;
       if (version > 0)
         archive &predictor_times;
     }

@@ -1,0 +1,62 @@
+#ifndef lithostress_faults_prescribed_slip_interface_h
+#define lithostress_faults_prescribed_slip_interface_h
+
+#include <deal.II/base/function_parser.h>
+
+#include <lithostress/faults/interface_law.h>
+
+namespace lithostress
+{
+  /**
+   * `Interface law = prescribed slip`: the jump is given, w = slip(s, t) d
+   * + opening(s, t) n with d the down-dip direction (kinematic, as
+   * PyLith's faults), exact through the locked law's constraints with
+   * inhomogeneities (FaultInterface::add_constraints()).
+   */
+  template <int dim>
+  class PrescribedSlipInterface : public InterfaceLaw<dim>
+  {
+  public:
+    /** `Slip` and `Opening`. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** The two expressions of s and t; an InputError naming the entry if
+     * one is not. */
+    void
+    parse_parameters(ParameterHandler   &prm,
+                     const std::string  &fault,
+                     const GravityField &gravity,
+                     const double        length_scale) override;
+
+    bool
+    constrains_jump() const override
+    {
+      return true;
+    }
+
+    /** (Slip, Opening) at (@p s, @p time). */
+    Tensor<1, 2>
+    prescribed_jump(const double s, const double time) const override;
+
+    /** Zero: the constraints hold the jump (never evaluated). */
+    InterfaceResponse
+    predictor(const InterfaceLawInputs &) const override
+    {
+      return InterfaceResponse();
+    }
+
+    /** Zero: the constraints hold the jump (never evaluated). */
+    InterfaceResponse
+    evaluate(const InterfaceLawInputs &) const override
+    {
+      return InterfaceResponse();
+    }
+
+  private:
+    /** Slip and opening [m] as functions of s [m] and t [s]. */
+    std::shared_ptr<FunctionParser<1>> slip, opening;
+  };
+} // namespace lithostress
+
+#endif
