@@ -80,6 +80,13 @@ namespace
     setenv("OMPI_MCA_pml", "ob1", 0);
     setenv("OMPI_MCA_btl", "self", 0);
     setenv("HWLOC_PLUGINS_BLACKLIST", "hwloc_gl,hwloc_opencl", 0);
+    // Open MPI's shared-memory file-pointer component (MPI-IO, which the
+    // checkpoints' mesh files use) keeps a file in the session directory,
+    // which isolated singletons of one user share: one that finishes
+    // removes it while another writes its checkpoint, whose MPI_File_open
+    // then fails ("mca_sharedfp_sm_file_open: Error, unable to open file
+    // for mmap", the test maxwell_block under ctest -j2 on 2026-12-02).
+    setenv("OMPI_MCA_sharedfp", "^sm", 0);
   }
 } // namespace
 

@@ -415,7 +415,7 @@ namespace lithostress
                           const Point<dim>     &x,
                           const Tensor<1, dim> &normal,
                           const unsigned int    d) {
-      if (weld || !fault.law->constrains_jump())
+      if (weld || !fault.law->has_prescribed_jump())
         return 0.0;
       const Tensor<1, 2> w =
         fault.law->prescribed_jump(fault.trace.distance_along(x), time);

@@ -2,6 +2,7 @@
 #include <lithostress/faults/fault_history.h>
 
 #include <algorithm>
+#include <cmath>
 #include <tuple>
 
 namespace lithostress
@@ -21,14 +22,16 @@ namespace lithostress
     records_of(const std::vector<double> &flat)
     {
       std::vector<Record> records;
-      for (std::size_t at = 0; at + 3 <= flat.size();)
+      for (std::size_t at = 0; at < flat.size();)
         {
-          Record r;
-          r.fault      = flat[at];
-          r.s          = flat[at + 1];
-          r.n          = static_cast<unsigned int>(flat[at + 2]);
-          r.components = flat.data() + at + 3;
-          if (at + 3 + r.n > flat.size())
+          Record     r;
+          const bool whole = at + 3 <= flat.size() && flat[at + 2] >= 0 &&
+                             flat[at + 2] == std::floor(flat[at + 2]);
+          r.fault      = whole ? flat[at] : 0;
+          r.s          = whole ? flat[at + 1] : 0;
+          r.n          = whole ? static_cast<unsigned int>(flat[at + 2]) : 0;
+          r.components = whole ? flat.data() + at + 3 : nullptr;
+          if (!whole || at + 3 + r.n > flat.size())
             throw ComputationError(
               "the faults' history ends inside a record: the checkpoint "
               "is damaged (start the run anew)");
@@ -49,7 +52,12 @@ namespace lithostress
                           const std::vector<double> &history)
   {
     AssertIndexRange(i + 1, offsets.size());
-    AssertDimension(history.size(), offsets[i + 1] - offsets[i]);
+    if (history.size() != offsets[i + 1] - offsets[i])
+      throw ComputationError(
+        "the interface law of fault " + std::to_string(faults[i]) +
+        " returned " + std::to_string(history.size()) +
+        " history components at a point, and its history_names() has " +
+        std::to_string(offsets[i + 1] - offsets[i]));
     std::copy(history.begin(),
               history.end(),
               trial_values.begin() + offsets[i]);

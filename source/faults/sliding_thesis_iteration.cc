@@ -139,10 +139,13 @@ namespace lithostress
               c.faults.coulomb_friction(values.point.fault);
             const double limit =
               law.friction_coefficient * std::max(0., -r.effective_normal);
-            const bool   over = std::abs(r.shear) > limit;
-            const double e =
-              over || held[face[0]] ? beyond_limit(r.shear, limit) : 0.;
-            ex = std::max(ex, std::abs(e));
+            // (An elastic fault never slides.)
+            const bool   slides = c.faults.law(values.point.fault).nonlinear();
+            const bool   over   = slides && std::abs(r.shear) > limit;
+            const double e      = slides && (over || held[face[0]])
+                                    ? beyond_limit(r.shear, limit)
+                                    : 0.;
+            ex                  = std::max(ex, std::abs(e));
             for (const unsigned int j : face)
               move_excess_into_slip(
                 c, j, e, over, law.shear_stiffness, slip, slid, held);
@@ -165,7 +168,12 @@ namespace lithostress
     bool
     solve_by_thesis_iteration(SlidingContext<dim> &c)
     {
-      const auto         &settings = c.settings;
+      const auto &settings = c.settings;
+      // Defined for Coulomb friction (thesis §5.5): another law is refused
+      // before anything is evaluated.
+      for (unsigned int k = 0; k < c.faults.n_faults(); ++k)
+        if (c.faults.has_face_terms(k))
+          c.faults.coulomb_friction(k);
       std::vector<double> slip(c.n_points, 0.);
       for (unsigned int i = 0; i < c.n_points; ++i)
         if (c.history.committed(i).size() > 0)

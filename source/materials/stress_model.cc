@@ -128,6 +128,61 @@ namespace lithostress
 
   template <int dim>
   bool
+  StressModel<dim>::uniform_tangents() const
+  {
+    for (const auto &[id, law] : rheology_of)
+      if (!law->uniform_tangent())
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  SymmetricTensor<4, dim>
+  StressModel<dim>::tangent(const types::material_id id,
+                            const Point<dim>        &p,
+                            const bool               of_state) const
+  {
+    const Rheology<dim> &law = *rheology_of.at(id);
+    if (law.uniform_tangent())
+      return of_state ? law.elastic_moduli().stiffness()
+                      : law.step_moduli().stiffness();
+    RheologyInputs<dim> in;
+    in.position  = p;
+    in.time_step = of_state ? 0. : step_length;
+    in.weight    = step_theta;
+    in.history =
+      ArrayView<const double>(zero_history.data(), history_size_of.at(id));
+    RheologyOutputs<dim> out;
+    evaluate(id, in, out);
+    return out.tangent;
+  }
+
+  template <int dim>
+  StressState<dim>
+  StressModel<dim>::step_stress(const types::material_id       id,
+                                const Point<dim>              &p,
+                                const SymmetricTensor<2, dim> &strain) const
+  {
+    const Rheology<dim> &law = *rheology_of.at(id);
+    if (law.uniform_tangent())
+      {
+        StressState<dim> s;
+        s.in_plane = law.step_moduli().stress(strain);
+        s.zz       = law.step_moduli().sigma_zz(strain);
+        return s;
+      }
+    RheologyInputs<dim> in;
+    in.position  = p;
+    in.strain    = strain;
+    in.time_step = step_length;
+    in.weight    = step_theta;
+    in.history =
+      ArrayView<const double>(zero_history.data(), history_size_of.at(id));
+    return law.stress(in);
+  }
+
+  template <int dim>
+  bool
   StressModel<dim>::has_viscous_material() const
   {
     for (const auto &[id, law] : rheology_of)

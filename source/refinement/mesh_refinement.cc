@@ -404,9 +404,10 @@ namespace lithostress
     const auto dual_stress =
       [&](const typename Triangulation<dim>::active_cell_iterator &cell,
           const Point<dim> &,
-          const Point<dim> &,
+          const Point<dim>              &p,
           const SymmetricTensor<2, dim> &strain) {
-        return stress_model.step_moduli(cell->material_id()).stress(strain);
+        return stress_model.step_stress(cell->material_id(), p, strain)
+          .in_plane;
       };
     std::vector<Vector<float>> result;
     for (unsigned int i = 0; i < duals.size(); ++i)

@@ -614,34 +614,35 @@ namespace lithostress
       if (current.state() == IteratorState::valid && local.size() > 0)
         constraints.distribute_local_to_global(local, dofs, rhs);
     };
-    integrate(k,
-              dof_handler,
-              fe_space,
-              [&](const auto &cell, const FEValues<dim> &fv, const unsigned q) {
-                if (current.state() != IteratorState::valid || cell != current)
-                  {
-                    flush();
-                    current = cell;
-                    local.reinit(fv.get_fe().n_dofs_per_cell());
-                    dofs.resize(fv.get_fe().n_dofs_per_cell());
-                    cell->get_dof_indices(dofs);
-                  }
-                const auto u = fe_space.displacement(
-                  fe_space.field_of(cell->active_fe_index()));
-                const ElasticModuli<dim> &moduli =
-                  stress_model.step_moduli(cell->material_id());
-                for (unsigned int i = 0; i < fv.get_fe().n_dofs_per_cell(); ++i)
-                  {
-                    const SymmetricTensor<2, dim> strain =
-                      fv[u].symmetric_gradient(i, q);
-                    if (strain.norm() == 0)
-                      continue;
-                    local(i) += component_of<dim>(goals[k].component,
-                                                  moduli.stress(strain),
-                                                  moduli.sigma_zz(strain)) *
-                                fv.JxW(q) / region;
-                  }
-              });
+    integrate(
+      k,
+      dof_handler,
+      fe_space,
+      [&](const auto &cell, const FEValues<dim> &fv, const unsigned q) {
+        if (current.state() != IteratorState::valid || cell != current)
+          {
+            flush();
+            current = cell;
+            local.reinit(fv.get_fe().n_dofs_per_cell());
+            dofs.resize(fv.get_fe().n_dofs_per_cell());
+            cell->get_dof_indices(dofs);
+          }
+        const auto u =
+          fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+        const types::material_id id = cell->material_id();
+        for (unsigned int i = 0; i < fv.get_fe().n_dofs_per_cell(); ++i)
+          {
+            const SymmetricTensor<2, dim> strain =
+              fv[u].symmetric_gradient(i, q);
+            if (strain.norm() == 0)
+              continue;
+            const StressState<dim> sigma =
+              stress_model.step_stress(id, fv.quadrature_point(q), strain);
+            local(i) +=
+              component_of<dim>(goals[k].component, sigma.in_plane, sigma.zz) *
+              fv.JxW(q) / region;
+          }
+      });
     flush();
     rhs.compress(VectorOperation::add);
   }

@@ -21,6 +21,9 @@ namespace lithostress
     NewtonIterate iterate;
     iterate.residual =
       start_residual >= 0 ? start_residual : problem.residual_norm(u);
+    if (!std::isfinite(iterate.residual))
+      throw ComputationError("the Newton iteration for " + settings.what +
+                             " starts from a residual that is not finite");
     iterate.start_residual = iterate.residual;
     Result result;
     for (iterate.iteration = 1; iterate.iteration <= settings.max_iterations;
@@ -47,12 +50,12 @@ namespace lithostress
         u                         = trial;
         result.iterations         = iterate.iteration;
         result.residual           = trial_norm;
-        problem.step_taken(iterate);
         if (!std::isfinite(iterate.residual))
           throw ComputationError("the Newton iteration for " + settings.what +
                                  " produced a residual that is not finite in "
                                  "iteration " +
                                  std::to_string(iterate.iteration));
+        problem.step_taken(iterate);
         if (iterate.residual <= settings.residual_tolerance * reference &&
             problem.converged_otherwise(iterate))
           {

@@ -78,6 +78,15 @@ namespace lithostress
                        const LameParameters &lame,
                        FullMatrix<double>   &cell_matrix);
 
+    /** The same with the tangent @p tangents[q] at each quadrature point
+     * of @p fe_values (a law whose tangent varies from point to point),
+     * for the field @p displacement. */
+    static void
+    add_cell_stiffness(const FEValues<dim>                        &fe_values,
+                       const FEValuesExtractors::Vector           &displacement,
+                       const std::vector<SymmetricTensor<4, dim>> &tangents,
+                       FullMatrix<double>                         &cell_matrix);
+
     /**
      * Add the cell and boundary-face terms of @p load on @p cell (whose
      * values are in @p fe_values) to @p cell_matrix and @p cell_rhs; used by
@@ -126,6 +135,15 @@ namespace lithostress
                    const bool             with_stiffness,
                    FullMatrix<double>    &cell_matrix,
                    Vector<double>        &cell_rhs) const;
+
+    /** The stiffness of @p cell, whose material's law has a tangent that
+     * varies from point to point: StressModel::tangent() at each
+     * quadrature point of @p fe_values. */
+    void
+    add_point_stiffness(
+      const typename DoFHandler<dim>::active_cell_iterator &cell,
+      const FEValues<dim>                                  &fe_values,
+      FullMatrix<double>                                   &cell_matrix) const;
 
     const FiniteElementSpace<dim> &fe_space;
     const StressModel<dim>        &stress_model;

@@ -133,6 +133,14 @@ namespace lithostress
       return false;
     }
 
+    /** Whether a law that constrains the jump gives a nonzero one
+     * (prescribed_jump()); false: the jump is zero (locked). */
+    virtual bool
+    has_prescribed_jump() const
+    {
+      return false;
+    }
+
     /** A law that constrains the jump: (the slip down the dip, the opening
      * along the normal) [m] at the distance @p s along the fault [m] and
      * the time @p time [s]; zero by default (locked). */

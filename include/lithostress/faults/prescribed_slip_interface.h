@@ -35,6 +35,12 @@ namespace lithostress
       return true;
     }
 
+    bool
+    has_prescribed_jump() const override
+    {
+      return true;
+    }
+
     /** (Slip, Opening) at (@p s, @p time). */
     Tensor<1, 2>
     prescribed_jump(const double s, const double time) const override;

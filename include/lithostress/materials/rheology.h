@@ -129,6 +129,20 @@ namespace lithostress
       return false;
     }
 
+    /**
+     * Whether the tangent of a step is step_moduli() at every point of the
+     * material (a linear, homogeneous law): the matrix assembly and the
+     * matrix-free operator then take it per cell. A law whose tangent
+     * varies from point to point returns false, and they take
+     * RheologyOutputs::tangent of evaluate() at each quadrature point
+     * (StressModel::tangent()).
+     */
+    virtual bool
+    uniform_tangent() const
+    {
+      return true;
+    }
+
     /** The time over which the law relaxes stress [s] (0: it does not):
      * the time loop's first step and its step limits. */
     virtual double

@@ -103,6 +103,43 @@ namespace lithostress
       return rheology_of.at(id)->step_moduli();
     }
 
+    /** Whether the law of material @p id has the same tangent at every
+     * point (Rheology::uniform_tangent()). */
+    bool
+    uniform_tangent(const types::material_id id) const
+    {
+      return rheology_of.at(id)->uniform_tangent();
+    }
+
+    /** Whether every material's law has a uniform tangent: the linear
+     * system is then assembled with one tangent per material. */
+    bool
+    uniform_tangents() const;
+
+    /**
+     * The tangent dσ/dε of the current step (set_time_step()) at the point
+     * @p p of a cell of material @p id, at zero strain and without history
+     * (a tangent that depends on the state needs the Newton iterate, which
+     * no caller gives yet), or with @p of_state the instantaneous one
+     * (the stress of a state): step_moduli()'s (elastic_moduli()'s)
+     * stiffness for a law with a uniform tangent, else
+     * RheologyOutputs::tangent of the law's evaluate() there. What the
+     * matrix assembly, the matrix-free operator and the force balance use
+     * at each quadrature point.
+     */
+    SymmetricTensor<4, dim>
+    tangent(const types::material_id id,
+            const Point<dim>        &p,
+            const bool               of_state = false) const;
+
+    /** The stress of the strain @p strain under the current step's
+     * tangent at @p p (no history, no initial stress): the linear law of
+     * the operator the goals' dual problems solve. */
+    StressState<dim>
+    step_stress(const types::material_id       id,
+                const Point<dim>              &p,
+                const SymmetricTensor<2, dim> &strain) const;
+
     /** Whether any material creeps. */
     bool
     has_viscous_material() const;

@@ -37,7 +37,17 @@ namespace lithostress
     using CellModuli = std::function<LameParameters(
       const typename DoFHandler<dim>::cell_iterator &cell)>;
 
+    /** Moduli at quadrature point q of an active cell. */
+    using PointModuli = std::function<
+      LameParameters(const typename DoFHandler<dim>::cell_iterator &cell,
+                     const unsigned int                             q)>;
+
     virtual ~ActiveOperator() = default;
+
+    /** Take the moduli at each quadrature point from @p moduli instead of
+     * per cell (a law whose tangent varies from point to point). */
+    virtual void
+    set_point_moduli(const PointModuli &moduli) = 0;
 
     /** dst = A src (constrained entries: the identity). */
     virtual void

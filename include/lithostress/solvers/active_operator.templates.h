@@ -47,6 +47,13 @@ namespace lithostress
       }
 
       void
+      set_point_moduli(
+        const typename ActiveOperator<dim>::PointModuli &moduli) override
+      {
+        op.set_point_moduli(moduli);
+      }
+
+      void
       vmult(VectorType &dst, const VectorType &src) const override
       {
         op.vmult(dst, src);
