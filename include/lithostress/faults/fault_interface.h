@@ -43,10 +43,11 @@ namespace lithostress
    * cross, and blocks that two fields cannot separate are input errors.
    *
    * The `Faults` section names each fault of the geometry and gives its
-   * interface law. `elastic`: the traction K w with K = diag(k_s, k_n) per
-   * unit fault area [Pa/m] in the fault's (shear, normal) frame, a face
-   * term ∫ [v]·K [u] ds between the two fields (assemble()), integrated at
-   * the Gauss-Lobatto points of whichever side is finer.
+   * interface law, an InterfaceLaw plug-in (faults/interface_law.h) chosen
+   * by `Interface law`; the built-in ones: `elastic`: the traction K w with K =
+   * diag(k_s, k_n) per unit fault area [Pa/m] in the fault's (shear, normal)
+   * frame, a face term ∫ [v]·K [u] ds between the two fields (assemble()),
+   * integrated at the Gauss-Lobatto points of whichever side is finer.
    * `locked`: exact continuity by constraints
    * (never a penalty): on fault faces of equal level the field-1 side's
    * DoFs equal the field-0 side's; where one side is finer, its trace is
