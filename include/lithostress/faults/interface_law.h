@@ -53,8 +53,8 @@ namespace lithostress
      * constraint's reaction) [Pa]. */
     bool   in_contact = false, closed = false;
     double contact_traction = 0;
-    /** The time step Δt [s]: 0 (no caller passes a step yet; a law whose
-     * state evolves in time will need the time loop to). */
+    /** The time step Δt [s] of the visco-elastic loop's step being solved
+     * (StressModel::time_step(); 0 in an elastic solve). */
     double time_step = 0;
     /** The point's history at the start of the step, in the order of
      * InterfaceLaw::history_names(). */

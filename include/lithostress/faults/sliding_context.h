@@ -176,6 +176,7 @@ namespace lithostress
         const auto        &p = values.point;
         InterfaceLawInputs in =
           FaultInterface<dim>::law_inputs(p, values.jump, history);
+        in.time_step = problem.stress_model.time_step();
         if (!p.at_tip && contact && contact->exact(values.index))
           {
             in.in_contact       = true;

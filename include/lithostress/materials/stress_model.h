@@ -149,6 +149,14 @@ namespace lithostress
     void
     set_time_step(const double dt, const double theta);
 
+    /** The length of the current step (set_time_step(); 0: a state, as
+     * in an elastic solve) [s]. */
+    double
+    time_step() const
+    {
+      return step_length;
+    }
+
     /** Changes whenever set_time_step() changes the step moduli. */
     unsigned long long
     moduli_version() const
