@@ -41,9 +41,8 @@ namespace lithostress
         sample.vertical_jump = w[1];
         // The traction of the last solve's state: the law's stuck response
         // with that history (the tractions of a frictional law's state).
-        const InterfaceResponse r =
-          law.predictor(FaultInterface<dim>::law_inputs(
-            p, w, nonlinear ? history.trial(i) : ArrayView<const double>()));
+        const InterfaceResponse r = law.predictor(
+          FaultInterface<dim>::law_inputs(p, w, history.trial(i)));
         sample.shear_traction =
           r.shear_traction * (p.shear[0] * down[0] + p.shear[1] * down[1]);
         sample.normal_traction =

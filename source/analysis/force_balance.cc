@@ -14,38 +14,6 @@ namespace lithostress
 {
   namespace
   {
-    /** The stiffness of the state (the instantaneous tangent) of a cell of
-     * material @p id, whose values @p fe_values holds: per cell for a law
-     * with a uniform tangent, else at each quadrature point. */
-    template <int dim>
-    void
-    add_state_stiffness(const StressModel<dim>           &stress_model,
-                        const FEValues<dim>              &fe_values,
-                        const FEValuesExtractors::Vector &u,
-                        const types::material_id          id,
-                        FullMatrix<double>               &cell_matrix)
-    {
-      if (stress_model.uniform_tangent(id))
-        {
-          ElasticAssembler<dim>::add_cell_stiffness(fe_values,
-                                                    stress_model.moduli(id),
-                                                    cell_matrix);
-          return;
-        }
-      std::vector<SymmetricTensor<4, dim>> tangents(
-        fe_values.n_quadrature_points);
-      for (unsigned int q = 0; q < tangents.size(); ++q)
-        tangents[q] =
-          stress_model.tangent(id, fe_values.quadrature_point(q), true);
-      ElasticAssembler<dim>::add_cell_stiffness(fe_values,
-                                                u,
-                                                tangents,
-                                                cell_matrix);
-    }
-  } // namespace
-
-  namespace
-  {
     /** A short name of a load: its description up to the first ':',
      * without parenthesised details, the pieces between them joined by
      * commas ("tractions on top (normal ...) base (...)" gives "tractions
@@ -184,8 +152,8 @@ namespace lithostress
           for (unsigned int i = 0; i < n; ++i)
             u_cell(i) = solution(dofs[i]);
           cell_matrix.reinit(n, n);
-          add_state_stiffness(
-            stress_model, fe_values, u, material.id, cell_matrix);
+          ElasticAssembler<dim>::add_law_stiffness(
+            stress_model, fe_values, u, material.id, true, cell_matrix);
           cell_residual.reinit(n);
           cell_matrix.vmult(cell_residual, u_cell);
           load_force.reinit(n);

@@ -193,10 +193,9 @@ namespace lithostress
     const ElasticModuli<dim> &moduli = stress_model.step_moduli(material.id);
     cell_matrix.reinit(n, n);
     cell_rhs.reinit(n);
-    if (with_stiffness && stress_model.uniform_tangent(material.id))
-      add_cell_stiffness(fe_values, moduli, cell_matrix);
-    else if (with_stiffness)
-      add_point_stiffness(cell, fe_values, cell_matrix);
+    if (with_stiffness)
+      add_law_stiffness(
+        stress_model, fe_values, u, material.id, false, cell_matrix);
     for (const auto &load : loads.loads())
       add_load_terms(*load,
                      cell,
@@ -336,21 +335,28 @@ namespace lithostress
 
   template <int dim>
   void
-  ElasticAssembler<dim>::add_point_stiffness(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const FEValues<dim>                                  &fe_values,
-    FullMatrix<double>                                   &cell_matrix) const
+  ElasticAssembler<dim>::add_law_stiffness(
+    const StressModel<dim>           &stress_model,
+    const FEValues<dim>              &fe_values,
+    const FEValuesExtractors::Vector &displacement,
+    const types::material_id          id,
+    const bool                        of_state,
+    FullMatrix<double>               &cell_matrix)
   {
-    const types::material_id             id = cell->material_id();
+    if (stress_model.uniform_tangent(id))
+      {
+        add_cell_stiffness(fe_values,
+                           of_state ? stress_model.moduli(id)
+                                    : stress_model.step_moduli(id),
+                           cell_matrix);
+        return;
+      }
     std::vector<SymmetricTensor<4, dim>> tangents(
       fe_values.n_quadrature_points);
     for (unsigned int q = 0; q < tangents.size(); ++q)
-      tangents[q] = stress_model.tangent(id, fe_values.quadrature_point(q));
-    add_cell_stiffness(fe_values,
-                       fe_space.displacement(
-                         fe_space.field_of(cell->active_fe_index())),
-                       tangents,
-                       cell_matrix);
+      tangents[q] =
+        stress_model.tangent(id, fe_values.quadrature_point(q), of_state);
+    add_cell_stiffness(fe_values, displacement, tangents, cell_matrix);
   }
 
   template <int dim>
@@ -361,19 +367,19 @@ namespace lithostress
     const std::vector<SymmetricTensor<4, dim>> &tangents,
     FullMatrix<double>                         &cell_matrix)
   {
-    const unsigned int                   n = fe_values.dofs_per_cell;
-    std::vector<SymmetricTensor<2, dim>> strains(n);
+    const unsigned int n = fe_values.dofs_per_cell;
+    // ε(φ_i) : (C_q ε(φ_j)), with C_q ε(φ_j) JxW formed once per j.
+    std::vector<SymmetricTensor<2, dim>> strains(n), stresses(n);
     for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
       {
-        for (unsigned int i = 0; i < n; ++i)
-          strains[i] = fe_values[displacement].symmetric_gradient(i, q);
-        const double JxW = fe_values.JxW(q);
-        for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; j < n; ++j)
           {
-            for (unsigned int j = 0; j < n; ++j)
-              cell_matrix(i, j) +=
-                (strains[i] * (tangents[q] * strains[j])) * JxW;
+            strains[j]  = fe_values[displacement].symmetric_gradient(j, q);
+            stresses[j] = tangents[q] * strains[j] * fe_values.JxW(q);
           }
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int j = 0; j < n; ++j)
+            cell_matrix(i, j) += strains[i] * stresses[j];
       }
   }
 

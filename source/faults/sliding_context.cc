@@ -135,12 +135,11 @@ namespace lithostress
       return [this, history](const PointValues &values,
                              Tensor<1, dim>    &t,
                              Tensor<2, dim>    &D) {
-        const auto        &p = values.point;
-        const unsigned int i = values.index;
-        InterfaceLawInputs in =
-          FaultInterface<dim>::law_inputs(p, values.jump, history(i));
-        in.time_step              = problem.stress_model.time_step();
-        const InterfaceResponse r = faults.law(p.fault).predictor(in);
+        const auto             &p = values.point;
+        const unsigned int      i = values.index;
+        const InterfaceResponse r =
+          faults.law(p.fault).predictor(FaultInterface<dim>::law_inputs(
+            p, values.jump, history(i), problem.stress_model.time_step()));
         D           = from_local_frame<dim>(r.tangent, p.shear, p.normal);
         t           = r.shear_traction * p.shear + r.normal_traction * p.normal;
         tangents[i] = D;

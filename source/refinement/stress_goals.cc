@@ -629,15 +629,25 @@ namespace lithostress
           }
         const auto u =
           fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
-        const types::material_id id = cell->material_id();
+        const types::material_id  id      = cell->material_id();
+        const bool                uniform = stress_model.uniform_tangent(id);
+        const ElasticModuli<dim> &moduli  = stress_model.step_moduli(id);
         for (unsigned int i = 0; i < fv.get_fe().n_dofs_per_cell(); ++i)
           {
             const SymmetricTensor<2, dim> strain =
               fv[u].symmetric_gradient(i, q);
             if (strain.norm() == 0)
               continue;
-            const StressState<dim> sigma =
-              stress_model.step_stress(id, fv.quadrature_point(q), strain);
+            // (The law is asked only where its tangent varies.)
+            StressState<dim> sigma;
+            if (uniform)
+              {
+                sigma.in_plane = moduli.stress(strain);
+                sigma.zz       = moduli.sigma_zz(strain);
+              }
+            else
+              sigma =
+                stress_model.step_stress(id, fv.quadrature_point(q), strain);
             local(i) +=
               component_of<dim>(goals[k].component, sigma.in_plane, sigma.zz) *
               fv.JxW(q) / region;

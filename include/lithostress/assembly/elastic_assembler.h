@@ -88,6 +88,22 @@ namespace lithostress
                        FullMatrix<double>                         &cell_matrix);
 
     /**
+     * Add the stiffness of a cell of material @p id (values in
+     * @p fe_values, field @p displacement) to @p cell_matrix: per cell
+     * with its law's step moduli, or with @p of_state its elastic moduli
+     * (the stress of a state), where the law's tangent is uniform; else
+     * StressModel::tangent() at each quadrature point. The assembly's and
+     * the force balance's stiffness.
+     */
+    static void
+    add_law_stiffness(const StressModel<dim>           &stress_model,
+                      const FEValues<dim>              &fe_values,
+                      const FEValuesExtractors::Vector &displacement,
+                      const types::material_id          id,
+                      const bool                        of_state,
+                      FullMatrix<double>               &cell_matrix);
+
+    /**
      * Add the cell and boundary-face terms of @p load on @p cell (whose
      * values are in @p fe_values) to @p cell_matrix and @p cell_rhs; used by
      * the assembly and by the force balance, which needs each load alone.
@@ -136,14 +152,6 @@ namespace lithostress
                    FullMatrix<double>    &cell_matrix,
                    Vector<double>        &cell_rhs) const;
 
-    /** The stiffness of @p cell, whose material's law has a tangent that
-     * varies from point to point: StressModel::tangent() at each
-     * quadrature point of @p fe_values. */
-    void
-    add_point_stiffness(
-      const typename DoFHandler<dim>::active_cell_iterator &cell,
-      const FEValues<dim>                                  &fe_values,
-      FullMatrix<double>                                   &cell_matrix) const;
 
     const FiniteElementSpace<dim> &fe_space;
     const StressModel<dim>        &stress_model;

@@ -355,11 +355,13 @@ namespace lithostress
     }
 
     /** The inputs of fault @p point's law at @p point with the jump
-     * @p jump (in the (x, y) frame) and the history @p history. */
+     * @p jump (in the (x, y) frame), the history @p history and the step
+     * @p time_step [s]. */
     static InterfaceLawInputs
     law_inputs(const InterfacePoint          &point,
                const Tensor<1, dim>          &jump,
-               const ArrayView<const double> &history)
+               const ArrayView<const double> &history,
+               const double                   time_step = 0)
     {
       InterfaceLawInputs in;
       in.shear_jump       = jump * point.shear;
@@ -367,6 +369,7 @@ namespace lithostress
       in.overburden_depth = point.overburden_depth;
       in.welded           = point.at_tip;
       in.history          = history;
+      in.time_step        = time_step;
       return in;
     }
 

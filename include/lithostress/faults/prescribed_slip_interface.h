@@ -3,7 +3,7 @@
 
 #include <deal.II/base/function_parser.h>
 
-#include <lithostress/faults/interface_law.h>
+#include <lithostress/faults/locked_interface.h>
 
 namespace lithostress
 {
@@ -11,10 +11,11 @@ namespace lithostress
    * `Interface law = prescribed slip`: the jump is given, w = slip(s, t) d
    * + opening(s, t) n with d the down-dip direction (kinematic, as
    * PyLith's faults), exact through the locked law's constraints with
-   * inhomogeneities (FaultInterface::add_constraints()).
+   * inhomogeneities (FaultInterface::add_constraints()): the locked law
+   * with a jump.
    */
   template <int dim>
-  class PrescribedSlipInterface : public InterfaceLaw<dim>
+  class PrescribedSlipInterface : public LockedInterface<dim>
   {
   public:
     /** `Slip` and `Opening`. */
@@ -30,12 +31,6 @@ namespace lithostress
                      const double        length_scale) override;
 
     bool
-    constrains_jump() const override
-    {
-      return true;
-    }
-
-    bool
     has_prescribed_jump() const override
     {
       return true;
@@ -44,20 +39,6 @@ namespace lithostress
     /** (Slip, Opening) at (@p s, @p time). */
     Tensor<1, 2>
     prescribed_jump(const double s, const double time) const override;
-
-    /** Zero: the constraints hold the jump (never evaluated). */
-    InterfaceResponse
-    predictor(const InterfaceLawInputs &) const override
-    {
-      return InterfaceResponse();
-    }
-
-    /** Zero: the constraints hold the jump (never evaluated). */
-    InterfaceResponse
-    evaluate(const InterfaceLawInputs &) const override
-    {
-      return InterfaceResponse();
-    }
 
   private:
     /** Slip and opening [m] as functions of s [m] and t [s]. */

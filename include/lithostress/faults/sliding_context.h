@@ -173,10 +173,9 @@ namespace lithostress
       respond(const PointValues             &values,
               const ArrayView<const double> &history) const
       {
-        const auto        &p = values.point;
-        InterfaceLawInputs in =
-          FaultInterface<dim>::law_inputs(p, values.jump, history);
-        in.time_step = problem.stress_model.time_step();
+        const auto        &p  = values.point;
+        InterfaceLawInputs in = FaultInterface<dim>::law_inputs(
+          p, values.jump, history, problem.stress_model.time_step());
         if (!p.at_tip && contact && contact->exact(values.index))
           {
             in.in_contact       = true;
