@@ -132,7 +132,7 @@ namespace lithostress
     FullMatrix<double>                   cell_matrix, load_matrix;
     Vector<double>                       u_cell, cell_residual, load_rhs;
     Vector<double>                       load_force;
-    std::vector<Vector<double>>          creep_values;
+    std::vector<Vector<double>>          history_values;
     std::vector<types::global_dof_index> dofs;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -183,14 +183,20 @@ namespace lithostress
                   cell_residual(i) -= force;
                 }
             }
-          // The creep strain's share of the internal force ∫ ε(v) : σ.
-          const CreepStrain<dim> *creep = stress_model.attached_creep_strain();
-          if (creep != nullptr && stress_model.rheology(material.id).creeps())
+          // The history's share of the internal force ∫ ε(v) : σ.
+          const CellHistory<dim> *history =
+            stress_model.attached_cell_history();
+          if (history != nullptr && stress_model.has_history(material.id))
             {
-              creep->get(cell, creep_values);
+              history->get(cell, history_values);
               load_rhs.reinit(n);
-              ElasticAssembler<dim>::add_initial_strain_terms(
-                fe_values, u, moduli, creep_values, load_rhs);
+              ElasticAssembler<dim>::add_history_terms(stress_model,
+                                                       fe_values,
+                                                       u,
+                                                       material.id,
+                                                       history_values,
+                                                       true,
+                                                       load_rhs);
               cell_residual -= load_rhs;
             }
           for (unsigned int i = 0; i < n; ++i)

@@ -82,10 +82,10 @@ namespace lithostress
               grad[d] += inputs.solution_gradients[q][f * dim + d];
             }
         const Point<dim> &p = inputs.evaluation_points[q];
-        // The creep strain lives on the unit cell: locate the point there.
+        // The history lives on the unit cell: locate the point there.
         const bool with_creep =
-          stress_model.attached_creep_strain() != nullptr &&
-          stress_model.rheology(material.id).creeps();
+          stress_model.attached_cell_history() != nullptr &&
+          stress_model.has_history(material.id);
         const StressState<dim> s =
           with_creep
             ? stress_model.stress(cell,

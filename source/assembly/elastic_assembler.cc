@@ -271,8 +271,6 @@ namespace lithostress
             const unsigned int n = fe_values.dofs_per_cell;
             const Material    &material =
               stress_model.materials(cell->material_id());
-            const ElasticModuli<dim> &moduli =
-              stress_model.step_moduli(material.id);
             dofs.resize(n);
             cell->get_dof_indices(dofs);
 
@@ -294,17 +292,18 @@ namespace lithostress
                            cell_matrix,
                            cell_rhs);
 
-            if (history_strain != nullptr &&
-                stress_model.rheology(material.id).creeps())
+            if (cell_history != nullptr &&
+                stress_model.has_history(material.id))
               {
-                history_strain->get(cell, history_values);
-                add_initial_strain_terms(fe_values,
-                                         fe_space.displacement(
-                                           fe_space.field_of(
-                                             cell->active_fe_index())),
-                                         moduli,
-                                         history_values,
-                                         cell_rhs);
+                cell_history->get(cell, history_values);
+                add_history_terms(stress_model,
+                                  fe_values,
+                                  fe_space.displacement(
+                                    fe_space.field_of(cell->active_fe_index())),
+                                  material.id,
+                                  history_values,
+                                  false,
+                                  cell_rhs);
               }
 
             if (with_matrix && direct->applies(dofs))
@@ -438,23 +437,31 @@ namespace lithostress
 
   template <int dim>
   void
-  ElasticAssembler<dim>::add_initial_strain_terms(
+  ElasticAssembler<dim>::add_history_terms(
+    const StressModel<dim>            &stress_model,
     const FEValues<dim>               &fe_values,
     const FEValuesExtractors::Vector  &displacement,
-    const ElasticModuli<dim>          &moduli,
-    const std::vector<Vector<double>> &strains,
+    const types::material_id           id,
+    const std::vector<Vector<double>> &records,
+    const bool                         of_state,
     Vector<double>                    &cell_rhs)
   {
-    AssertDimension(strains.size(), fe_values.n_quadrature_points);
+    AssertDimension(records.size(), fe_values.n_quadrature_points);
+    const HistoryLayout &layout = stress_model.history_layout();
+    std::vector<double>  scratch;
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        const SymmetricTensor<2, dim> sigma0 =
-          moduli.initial_strain_stress(CreepStrain<dim>::tensor(strains[q]))
-            .first;
+        const SymmetricTensor<2, dim> sigma_h =
+          stress_model
+            .history_stress(id,
+                            fe_values.quadrature_point(q),
+                            layout.of(id, records[q], scratch),
+                            of_state)
+            .in_plane;
         const double JxW = fe_values.JxW(q);
         for (unsigned int i = 0; i < fe_values.dofs_per_cell; ++i)
           cell_rhs(i) -=
-            (fe_values[displacement].symmetric_gradient(i, q) * sigma0) * JxW;
+            (fe_values[displacement].symmetric_gradient(i, q) * sigma_h) * JxW;
       }
   }
 

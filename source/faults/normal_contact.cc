@@ -46,7 +46,7 @@ namespace lithostress
 
   namespace
   {
-    /** The bulk of @p problem (cells and loads, with its history strain)
+    /** The bulk of @p problem (cells and loads, with its history)
      * into @p system's right-hand side, and its matrix if @p with_matrix,
      * with @p system's constraints. */
     template <int dim>
@@ -59,7 +59,7 @@ namespace lithostress
       ElasticAssembler<dim> assembler(problem.fe_space,
                                       problem.stress_model,
                                       problem.loads);
-      assembler.set_history_strain(problem.history_strain);
+      assembler.set_cell_history(problem.cell_history);
       assembler.assemble(dof_handler, system, with_matrix);
     }
   } // namespace

@@ -25,16 +25,26 @@ namespace lithostress
   std::vector<std::string>
   MaxwellRheology<dim>::history_names() const
   {
-    if (dim == 2)
-      return {"creep_xx", "creep_yy", "creep_xy", "creep_zz"};
-    return {
-      "creep_xx", "creep_yy", "creep_zz", "creep_xy", "creep_yz", "creep_xz"};
+    return CreepStrain<dim>::names();
+  }
+
+  template <int dim>
+  double
+  MaxwellRheology<dim>::history_norm(const ArrayView<const double> &h) const
+  {
+    return CreepStrain<dim>::tensor(h).norm();
   }
 
   template <int dim>
   void
   MaxwellRheology<dim>::set_time_step(const double dt, const double weight)
   {
+    // Δt = 0 is the state's response: exactly the elastic moduli.
+    if (dt == 0)
+      {
+        step.emplace(*elastic);
+        return;
+      }
     const double relaxed =
       shear_modulus / (1.0 + weight * dt / relaxation_time());
     step.emplace(bulk_modulus - 2.0 / 3.0 * relaxed, relaxed, plane_state);

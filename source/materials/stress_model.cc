@@ -1,7 +1,7 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/materials/stress_model.h>
 
-#include <array>
+#include <algorithm>
 #include <stdexcept>
 
 namespace lithostress
@@ -25,28 +25,18 @@ namespace lithostress
         prm.enter_subsection(m.name);
         law->parse_parameters(prm, m, plane_state);
         prm.leave_subsection();
-        // The time loop carries a creeping law's history as the deviatoric
-        // creep strain (CreepStrain) and assembles it as an initial strain.
-        if (law->creeps() &&
-            law->history_names().size() != CreepStrain<dim>::n_components)
-          throw std::logic_error(
-            "the rock law <" + m.rheology + "> creeps with " +
-            std::to_string(law->history_names().size()) +
-            " history components, but the time loop carries the " +
-            std::to_string(CreepStrain<dim>::n_components) +
-            " of a deviatoric creep strain");
         if (m.viscosity > 0 && !law->creeps())
           throw_input_error("Materials/" + m.name + "/Viscosity",
                             "is given, but Rheology = " + m.rheology +
                               " does not creep: remove the viscosity or "
                               "choose a law that uses it (maxwell)");
-        history_size_of[m.id] = law->history_names().size();
+        layout.add(m.id, law->history_names());
+        zero_history.resize(std::max<std::size_t>(zero_history.size(),
+                                                  layout.size(m.id)),
+                            0.0);
         rheology_of.emplace(m.id, std::move(law));
       }
     prm.leave_subsection();
-    for (const auto &[id, n] : history_size_of)
-      if (n > zero_history.size())
-        zero_history.resize(n, 0.0);
     for (const InitialStressSource<dim> *source : sources)
       if (source->has_initial_stress())
         initial_stress_loads.push_back(source);
@@ -74,8 +64,7 @@ namespace lithostress
     RheologyInputs<dim>  in;
     in.position = p;
     in.strain   = strain;
-    in.history =
-      ArrayView<const double>(zero_history.data(), history_size_of.at(id));
+    in.history  = ArrayView<const double>(zero_history.data(), layout.size(id));
     in.initial_stress = initial_stress(id, p, law.moduli_for(in));
     return law.stress(in);
   }
@@ -85,15 +74,14 @@ namespace lithostress
   StressModel<dim>::stress(const types::material_id       id,
                            const Point<dim>              &p,
                            const SymmetricTensor<2, dim> &strain,
-                           const SymmetricTensor<2, 3>   &creep) const
+                           const ArrayView<const double> &history) const
   {
-    std::array<double, CreepStrain<dim>::n_components> c;
-    CreepStrain<dim>::components(creep, ArrayView<double>(c.data(), c.size()));
+    AssertDimension(history.size(), layout.size(id));
     const Rheology<dim> &law = *rheology_of.at(id);
     RheologyInputs<dim>  in;
     in.position       = p;
     in.strain         = strain;
-    in.history        = ArrayView<const double>(c.data(), c.size());
+    in.history        = history;
     in.initial_stress = initial_stress(id, p, law.moduli_for(in));
     return law.stress(in);
   }
@@ -106,13 +94,29 @@ namespace lithostress
     const Point<dim>                                        &p,
     const SymmetricTensor<2, dim>                           &strain) const
   {
-    if (creep_strain == nullptr ||
-        !rheology_of.at(cell->material_id())->creeps())
-      return stress(cell->material_id(), p, strain);
-    return stress(cell->material_id(),
-                  p,
-                  strain,
-                  creep_strain->value(cell, unit));
+    const types::material_id id = cell->material_id();
+    if (cell_history == nullptr || !has_history(id))
+      return stress(id, p, strain);
+    Vector<double>      record;
+    std::vector<double> scratch;
+    cell_history->value(cell, unit, record);
+    return stress(id, p, strain, layout.of(id, record, scratch));
+  }
+
+  template <int dim>
+  StressState<dim>
+  StressModel<dim>::history_stress(const types::material_id       id,
+                                   const Point<dim>              &p,
+                                   const ArrayView<const double> &history,
+                                   const bool of_state) const
+  {
+    AssertDimension(history.size(), layout.size(id));
+    RheologyInputs<dim> in;
+    in.position  = p;
+    in.time_step = of_state ? 0. : step_length;
+    in.weight    = step_theta;
+    in.history   = history;
+    return rheology_of.at(id)->stress(in);
   }
 
   template <int dim>
@@ -150,8 +154,7 @@ namespace lithostress
     in.position  = p;
     in.time_step = of_state ? 0. : step_length;
     in.weight    = step_theta;
-    in.history =
-      ArrayView<const double>(zero_history.data(), history_size_of.at(id));
+    in.history = ArrayView<const double>(zero_history.data(), layout.size(id));
     RheologyOutputs<dim> out;
     evaluate(id, in, out);
     return out.tangent;
@@ -176,8 +179,7 @@ namespace lithostress
     in.strain    = strain;
     in.time_step = step_length;
     in.weight    = step_theta;
-    in.history =
-      ArrayView<const double>(zero_history.data(), history_size_of.at(id));
+    in.history = ArrayView<const double>(zero_history.data(), layout.size(id));
     return law.stress(in);
   }
 

@@ -83,21 +83,16 @@ namespace lithostress
       }
     data_out.add_data_vector(material_id, "material_id");
     data_out.add_data_vector(rank, "mpi_rank");
-    const CreepStrain<dim> *creep = stress_model.attached_creep_strain();
+    const CellHistory<dim> *history = stress_model.attached_cell_history();
     Vector<float>           maxwell_time(tria.n_active_cells());
-    if (creep != nullptr)
+    if (history != nullptr)
       {
-        // The components named by the creeping laws (MaxwellRheology:
-        // creep_xx, creep_yy, creep_xy, creep_zz).
-        std::vector<std::string> names;
-        for (const Material &m : stress_model.materials.materials())
-          if (names.empty() && stress_model.rheology(m.id).creeps())
-            names = stress_model.rheology(m.id).history_names();
-        // A time loop without a creeping material still carries the
-        // (zero) creep strain.
-        if (names.empty())
-          names = {"creep_xx", "creep_yy", "creep_xy", "creep_zz"};
-        data_out.add_data_vector(creep->dof_handler(), creep->values(), names);
+        // The components the laws name (MaxwellRheology: creep_xx,
+        // creep_yy, creep_xy, creep_zz); none where no law keeps a history.
+        if (history->n_components() > 0)
+          data_out.add_data_vector(history->dof_handler(),
+                                   history->values(),
+                                   history->names());
         cell_index = 0;
         for (const auto &cell : tria.active_cell_iterators())
           {

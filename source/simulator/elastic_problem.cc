@@ -123,7 +123,7 @@ namespace lithostress
   template <int dim>
   void
   ElasticProblem<dim>::assemble(const double            time,
-                                const CreepStrain<dim> *history)
+                                const CellHistory<dim> *history)
   {
     TimerOutput::Scope   t(timer, "assemble");
     Timer                clock(model.communicator, true);
@@ -157,7 +157,7 @@ namespace lithostress
         loads.balance(resultants);
       }
     ElasticAssembler<dim> assembler(model.fe_space, model.stress_model, loads);
-    assembler.set_history_strain(history);
+    assembler.set_cell_history(history);
     assembled_history = history;
     assembled_time    = time;
     // The matrix only where the operator changed (the time loop assembles

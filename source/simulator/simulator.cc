@@ -239,8 +239,10 @@ namespace lithostress
     if (time_stepping.enabled && time_stepping.resume)
       Checkpoint::check_resumable(output_directory, prm, communicator);
     if (time_stepping.enabled)
-      creep = std::make_unique<CreepIntegrator<dim>>(triangulation,
-                                                     fe_space->degree() + 1);
+      creep =
+        std::make_unique<CreepIntegrator<dim>>(triangulation,
+                                               fe_space->degree() + 1,
+                                               stress_model->history_layout());
     auto linear_solver = LinearSolverSelector<dim>::create(
       prm,
       *fe_space,

@@ -14,6 +14,19 @@
 
 namespace lithostress
 {
+  namespace
+  {
+    /** @p names separated by commas. */
+    std::string
+    listed(const std::vector<std::string> &names)
+    {
+      std::string text;
+      for (const std::string &name : names)
+        text += (text.empty() ? "" : ", ") + name;
+      return text;
+    }
+  } // namespace
+
   template <int dim>
   ViscoelasticTimeLoop<dim>::ViscoelasticTimeLoop(const TimeStepping &settings,
                                                   const Parts        &parts)
@@ -27,7 +40,7 @@ namespace lithostress
   unsigned int
   ViscoelasticTimeLoop<dim>::solve_system(const bool              new_mesh,
                                           const double            time,
-                                          const CreepStrain<dim> *history,
+                                          const CellHistory<dim> *history,
                                           const bool              commit_slip)
   {
     ElasticProblem<dim> &problem = parts.problem;
@@ -73,7 +86,7 @@ namespace lithostress
       {
         model.set_time_step(h, weight);
         record.linear_iterations +=
-          solve_system(false, t_new, &creep.history_strain(), false);
+          solve_system(false, t_new, &creep.step_history(), false);
         record.nonlinear_iterations = 1;
         TimerOutput::Scope timer(parts.access.timer, "creep update");
         increment = creep.finish_implicit_step(problem.dof_handler(),
@@ -115,7 +128,7 @@ namespace lithostress
     for (record.nonlinear_iterations = 1;; ++record.nonlinear_iterations)
       {
         record.linear_iterations +=
-          solve_system(false, t_new, &creep.history_strain(), false);
+          solve_system(false, t_new, &creep.step_history(), false);
         TimerOutput::Scope timer(parts.access.timer, "creep update");
         change = creep.update_thesis_history(problem.dof_handler(),
                                              parts.access.fe_space,
@@ -159,7 +172,7 @@ namespace lithostress
     // current time: the elastic moduli with the creep strain as initial
     // strain.
     parts.stress_model.set_time_step(0, settings.theta);
-    solve_system(true, t, &creep.creep_strain(), true);
+    solve_system(true, t, &creep.cell_history(), true);
   }
 
   template <int dim>
@@ -226,7 +239,7 @@ namespace lithostress
                      false);
     ++linear_solves;
     creep.start_history();
-    model.attach_creep_strain(&creep.creep_strain());
+    model.attach_cell_history(&creep.cell_history());
     if (settings.output_at_zero)
       write_output(0);
 
@@ -281,6 +294,7 @@ namespace lithostress
     LoopState state;
     state.predictor_times = predictor.times();
     state.fault_history   = parts.problem.fault_history().gather(comm);
+    state.cell_history    = parts.creep.cell_history().names();
     state.step            = step;
     state.linear_solves   = linear_solves;
     state.time            = t;
@@ -321,6 +335,12 @@ namespace lithostress
     stress_scale                = state.stress_scale;
     steps                       = state.steps;
     // The mesh and the fields, in the order they were attached.
+    if (state.cell_history != parts.creep.cell_history().names())
+      throw ComputationError(
+        "the checkpoint " + directory + " holds the history components <" +
+        listed(state.cell_history) + "> at the cells, but the " +
+        "model's rock laws keep <" +
+        listed(parts.creep.cell_history().names()) + "> (start the run anew)");
     problem.fault_history().restore(state.fault_history);
     problem.triangulation().load(directory + "/mesh");
     parts.stress_model.set_time_step(0, settings.theta);
@@ -345,7 +365,7 @@ namespace lithostress
                               relevant,
                               a.communicator);
     problem.solution() = owned;
-    parts.stress_model.attach_creep_strain(&parts.creep.creep_strain());
+    parts.stress_model.attach_cell_history(&parts.creep.cell_history());
     parts.start_output();
     a.log << "Resumed from " << directory << ": step " << step
           << ", t = " << settings.format(t) << " (" << t << " s), "

@@ -233,12 +233,12 @@ namespace lithostress
                                               springs,
                                               vectorized_operator_built());
           // A law whose tangent varies in space: the active operator takes
-          // it at each quadrature point; the levels, a preconditioner,
-          // keep each material's step moduli.
+          // it at each quadrature point (isotropic or not); the levels, a
+          // preconditioner, keep each material's step moduli.
           if (!problem.stress_model.uniform_tangents())
             on_all_ranks(communicator, [&]() {
-              system_operator->set_point_moduli(
-                multigrid_tools::point_moduli(problem, degree + 1));
+              system_operator->set_point_tangents(
+                multigrid_tools::point_tangents(problem, degree + 1));
             });
         }
       report.phases.emplace_back("matrix-free set-up (active mesh)",

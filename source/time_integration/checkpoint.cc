@@ -63,8 +63,10 @@ namespace lithostress
   namespace
   {
     /** The first line of state.txt: the format of what follows. */
-    // 4: the model text holds each material's Rheology (2026-12-01).
-    const std::string state_format = "lithostress-checkpoint 5";
+    // 4: the model text holds each material's Rheology (2026-12-01);
+    // 5: the faults' named history; 6: the names of the cell history's
+    // components (2026-12-02).
+    const std::string state_format = "lithostress-checkpoint 6";
   } // namespace
 
   void

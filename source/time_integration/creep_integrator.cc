@@ -9,13 +9,52 @@ namespace lithostress
   template <int dim>
   CreepIntegrator<dim>::CreepIntegrator(
     const parallel::distributed::Triangulation<dim> &triangulation,
-    const unsigned int                               n_points_1d)
-      : creep(triangulation, n_points_1d)
-      , history(triangulation, n_points_1d)
-      , start_rate(triangulation, n_points_1d)
-      , end_rate(triangulation, n_points_1d)
-      , previous(triangulation, n_points_1d)
+    const unsigned int                               n_points_1d,
+    const HistoryLayout                             &layout)
+      : layout(layout)
+      , creep(triangulation, n_points_1d, layout.names())
+      , history(triangulation, n_points_1d, layout.names())
+      , start_rate(triangulation, n_points_1d, layout.names())
+      , end_rate(triangulation, n_points_1d, layout.names())
+      , previous(triangulation, n_points_1d, layout.names())
   {
+  }
+
+  template <int dim>
+  void
+  CreepIntegrator<dim>::Increment::add(
+    const Rheology<dim>           &law,
+    const ArrayView<const double> &c_old,
+    const ArrayView<const double> &c_new,
+    const ArrayView<const double> &rate_start,
+    const ArrayView<const double> &rate_end,
+    const double                   dt,
+    const bool                     second_order)
+  {
+    const unsigned int n = c_old.size();
+    work.resize(n);
+    const ArrayView<const double> combination(work.data(), n);
+    for (unsigned int k = 0; k < n; ++k)
+      work[k] = c_new[k] - c_old[k];
+    creep_change = std::max(creep_change, law.history_norm(combination));
+    if (second_order)
+      {
+        for (unsigned int k = 0; k < n; ++k)
+          work[k] =
+            c_new[k] - c_old[k] - 0.5 * dt * (rate_start[k] + rate_end[k]);
+        local_error =
+          std::max(local_error, 1.6 * law.history_norm(combination));
+      }
+    else
+      {
+        for (unsigned int k = 0; k < n; ++k)
+          work[k] = rate_end[k] - rate_start[k];
+        local_error =
+          std::max(local_error, 0.5 * dt * law.history_norm(combination));
+      }
+    elastic_strain =
+      std::max(elastic_strain,
+               law.relaxation_time() * law.history_norm(rate_end));
   }
 
   template <int dim>
@@ -53,7 +92,18 @@ namespace lithostress
 
   template <int dim>
   void
-  CreepIntegrator<dim>::for_each_viscous_cell(
+  CreepIntegrator<dim>::store(const types::material_id   id,
+                              const std::vector<double> &values,
+                              Vector<double>            &record) const
+  {
+    if (record.size() != layout.names().size())
+      record.reinit(layout.names().size());
+    layout.store(id, make_array_view(values), record);
+  }
+
+  template <int dim>
+  void
+  CreepIntegrator<dim>::for_each_cell_with_history(
     const DoFHandler<dim>               &dof_handler,
     const FiniteElementSpace<dim>       &fe_space,
     const StressModel<dim>              &stress_model,
@@ -72,7 +122,7 @@ namespace lithostress
     on_all_ranks(dof_handler.get_communicator(), [&]() {
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned() &&
-            stress_model.rheology(cell->material_id()).creeps())
+            stress_model.has_history(cell->material_id()))
           {
             hp_fe_values.reinit(cell);
             const FEValues<dim> &fe_values =
@@ -108,26 +158,25 @@ namespace lithostress
     if (!start_rate_current)
       {
         std::vector<Vector<double>> c, rate;
+        std::vector<double>         scratch;
         RheologyInputs<dim>         in;
         RheologyOutputs<dim>        out;
-        for_each_viscous_cell(
+        for_each_cell_with_history(
           dof_handler,
           fe_space,
           stress_model,
           solution,
           [&](const auto &cell, const auto &points, const auto &strains) {
+            const types::material_id id = cell->material_id();
             creep.get(cell, c);
-            rate.resize(c.size());
+            start_rate.get(cell, rate);
             for (unsigned int q = 0; q < c.size(); ++q)
               {
                 in.position = points[q];
                 in.strain   = strains[q];
-                in.history  = make_array_view(c[q]);
-                stress_model.evaluate(cell->material_id(), in, out);
-                rate[q].reinit(out.history_rate.size());
-                std::copy(out.history_rate.begin(),
-                          out.history_rate.end(),
-                          rate[q].begin());
+                in.history  = layout.of(id, c[q], scratch);
+                stress_model.evaluate(id, in, out);
+                store(id, out.history_rate, rate[q]);
               }
             start_rate.set(cell, rate);
           });
@@ -169,11 +218,12 @@ namespace lithostress
   {
     Increment                   increment;
     std::vector<Vector<double>> c, h, rate;
+    std::vector<double>         c_scratch, h_scratch, rate_scratch;
     RheologyInputs<dim>         in;
     RheologyOutputs<dim>        out;
     in.time_step = step;
     in.weight    = step_weight;
-    for_each_viscous_cell(
+    for_each_cell_with_history(
       dof_handler,
       fe_space,
       stress_model,
@@ -185,25 +235,21 @@ namespace lithostress
         start_rate.get(cell, rate);
         for (unsigned int q = 0; q < c.size(); ++q)
           {
-            // The step's stress with the history strain c*, its creep rate
-            // and c_{n+1} = c* + w Δt ċ_{n+1}.
+            // The step's stress with the history h* (the history strain
+            // c*), the history's rate and h_{n+1} = h* + w Δt ḣ_{n+1}.
             in.position = points[q];
             in.strain   = strains[q];
-            in.history  = make_array_view(h[q]);
+            in.history  = layout.of(id, h[q], h_scratch);
             stress_model.evaluate(id, in, out);
-            const SymmetricTensor<2, 3> rate_end =
-              CreepStrain<dim>::tensor(make_array_view(out.history_rate));
-            const SymmetricTensor<2, 3> c_new =
-              CreepStrain<dim>::tensor(make_array_view(out.history));
-            increment.add(CreepStrain<dim>::tensor(c[q]),
-                          c_new,
-                          CreepStrain<dim>::tensor(rate[q]),
-                          rate_end,
-                          stress_model.rheology(id).relaxation_time(),
+            increment.add(stress_model.rheology(id),
+                          layout.of(id, c[q], c_scratch),
+                          make_array_view(out.history),
+                          layout.of(id, rate[q], rate_scratch),
+                          make_array_view(out.history_rate),
                           step,
                           bdf2_step);
-            CreepStrain<dim>::components(c_new, c[q]);
-            CreepStrain<dim>::components(rate_end, rate[q]);
+            store(id, out.history, c[q]);
+            store(id, out.history_rate, rate[q]);
           }
         creep.set(cell, c);
         end_rate.set(cell, rate);
@@ -224,40 +270,49 @@ namespace lithostress
   {
     double                      change = 0, largest = 0;
     std::vector<Vector<double>> c, h, rate;
-    RheologyInputs<dim>         in;
-    RheologyOutputs<dim>        out;
-    for_each_viscous_cell(
+    std::vector<double>  c_scratch, h_scratch, rate_scratch, h_new, difference;
+    RheologyInputs<dim>  in;
+    RheologyOutputs<dim> out;
+    for_each_cell_with_history(
       dof_handler,
       fe_space,
       stress_model,
       solution,
       [&](const auto &cell, const auto &points, const auto &strains) {
-        const types::material_id id = cell->material_id();
+        const types::material_id id  = cell->material_id();
+        const Rheology<dim>     &law = stress_model.rheology(id);
         creep.get(cell, c);
         history.get(cell, h);
         start_rate.get(cell, rate);
         for (unsigned int q = 0; q < c.size(); ++q)
           {
             // The stress of the state with history h (elastic moduli) and
-            // its creep rate.
-            const SymmetricTensor<2, 3> h_old = CreepStrain<dim>::tensor(h[q]);
-            in.position                       = points[q];
-            in.strain                         = strains[q];
-            in.history                        = make_array_view(h[q]);
+            // its rate; the new history c_n + (Δt/2)(ḣ_n + ḣ).
+            const ArrayView<const double> h_old =
+              layout.of(id, h[q], h_scratch);
+            in.position = points[q];
+            in.strain   = strains[q];
+            in.history  = h_old;
             stress_model.evaluate(id, in, out);
-            const SymmetricTensor<2, 3> sigma = tensor_3d(out.stress);
-            const SymmetricTensor<2, 3> h_new =
-              CreepStrain<dim>::tensor(c[q]) +
-              0.5 * step *
-                (CreepStrain<dim>::tensor(rate[q]) +
-                 CreepStrain<dim>::tensor(make_array_view(out.history_rate)));
+            const ArrayView<const double> c_old =
+              layout.of(id, c[q], c_scratch);
+            const ArrayView<const double> r_old =
+              layout.of(id, rate[q], rate_scratch);
+            h_new.resize(h_old.size());
+            difference.resize(h_old.size());
+            for (unsigned int k = 0; k < h_new.size(); ++k)
+              {
+                h_new[k] =
+                  c_old[k] + 0.5 * step * (r_old[k] + out.history_rate[k]);
+                difference[k] = h_new[k] - h_old[k];
+              }
             // Δs = 4η ΔΔc / Δt: the stress change behind the history's.
             change  = std::max(change,
-                              (h_new - h_old).norm() * 4.0 *
-                                stress_model.rheology(id).relaxation_time() *
+                              law.history_norm(make_array_view(difference)) *
+                                4.0 * law.relaxation_time() *
                                 stress_model.moduli(id).mu / step);
-            largest = std::max(largest, deviator(sigma).norm());
-            CreepStrain<dim>::components(h_new, h[q]);
+            largest = std::max(largest, deviator(tensor_3d(out.stress)).norm());
+            store(id, h_new, h[q]);
           }
         history.set(cell, h);
       });
@@ -275,31 +330,35 @@ namespace lithostress
   {
     Increment                   increment;
     std::vector<Vector<double>> c, h, rate;
+    std::vector<double>         c_scratch, h_scratch, rate_scratch, rate_end;
     const auto                 &tria = creep.dof_handler().get_triangulation();
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned() &&
-          stress_model.rheology(cell->material_id()).creeps())
+          stress_model.has_history(cell->material_id()))
         {
+          const types::material_id id = cell->material_id();
           creep.get(cell, c);
           history.get(cell, h);
           start_rate.get(cell, rate);
-          const double tau =
-            stress_model.rheology(cell->material_id()).relaxation_time();
           for (unsigned int q = 0; q < c.size(); ++q)
             {
-              const SymmetricTensor<2, 3> c_new =
-                CreepStrain<dim>::tensor(h[q]);
+              const ArrayView<const double> c_old =
+                layout.of(id, c[q], c_scratch);
+              const ArrayView<const double> c_new =
+                layout.of(id, h[q], h_scratch);
+              const ArrayView<const double> r_old =
+                layout.of(id, rate[q], rate_scratch);
               // The trapezoidal rule's end rate: 2 Δc/Δt − ċ_n.
-              const SymmetricTensor<2, 3> rate_end =
-                2.0 / step * (c_new - CreepStrain<dim>::tensor(c[q])) -
-                CreepStrain<dim>::tensor(rate[q]);
-              increment.add(CreepStrain<dim>::tensor(c[q]),
+              rate_end.resize(c_old.size());
+              for (unsigned int k = 0; k < rate_end.size(); ++k)
+                rate_end[k] = 2.0 / step * (c_new[k] - c_old[k]) - r_old[k];
+              increment.add(stress_model.rheology(id),
+                            c_old,
                             c_new,
-                            CreepStrain<dim>::tensor(rate[q]),
-                            rate_end,
-                            tau,
+                            r_old,
+                            make_array_view(rate_end),
                             step);
-              CreepStrain<dim>::components(rate_end, rate[q]);
+              store(id, rate_end, rate[q]);
             }
           creep.set(cell, h);
           end_rate.set(cell, rate);

@@ -5,8 +5,12 @@
 // prescribed displacements (one part fixed, one a roller), the product of
 // ElasticOperator with random vectors equals the product with a matrix
 // assembled here, independently, with FEValues — to round-off. Checked with
-// moduli per cell (by material) and per quadrature point (varying in space),
-// on whatever number of ranks the test is started on. The same on an
+// moduli per cell (by material), per quadrature point (varying in space)
+// and with a tangent per quadrature point that is not isotropic
+// (ElasticOperator::set_point_tangents: the isotropic moduli plus
+// beta(x) A (x) A, A a fixed symmetric tensor, as a non-linear law's
+// consistent tangent adds a rank-one term), on whatever number of ranks the
+// test is started on. The same on an
 // adaptively refined rectangle of non-square cells, where the operator takes
 // its fast path for axis-parallel cells (checked to be taken), with springs
 // on the base and on a vertical side (where k |n_y| vanishes). In the
@@ -60,6 +64,41 @@ namespace
     m.lambda *= 1 + 0.5 * std::sin(3 * p[0]) * std::cos(2 * p[1]);
     m.mu *= 1.5 + 0.4 * std::cos(p[0] + 2 * p[1]);
     return m;
+  }
+
+  /** How the operator is given its stiffness. */
+  enum class Moduli
+  {
+    per_cell,
+    at_points,
+    anisotropic
+  };
+
+  const char *
+  name(const Moduli moduli)
+  {
+    return moduli == Moduli::per_cell    ? "moduli per cell "
+           : moduli == Moduli::at_points ? "moduli at points"
+                                         : "tangent at points";
+  }
+
+  // A tangent at points that is not isotropic: point_moduli's plus
+  // beta A (x) A, beta of the order of mu and varying in space (symmetric
+  // and positive definite).
+  SymmetricTensor<4, dim>
+  point_tangent(const types::material_id id, const Point<dim> &p)
+  {
+    const LameParameters    m = point_moduli(id, p);
+    SymmetricTensor<4, dim> C;
+    for (unsigned int i = 0; i < dim; ++i)
+      for (unsigned int j = 0; j < dim; ++j)
+        C[i][i][j][j] = m.lambda;
+    C += 2 * m.mu * identity_tensor<dim>();
+    SymmetricTensor<2, dim> A;
+    A[0][0] = 1;
+    A[1][1] = -0.5;
+    A[0][1] = 0.3;
+    return C + (0.8 + 0.3 * std::sin(p[0] - p[1])) * m.mu * outer_product(A, A);
   }
 
   // Spring stiffnesses [Pa/m] of the order of μ/h (h ≈ 0.03 the finest
@@ -152,7 +191,7 @@ namespace
   cell_matrix(const typename DoFHandler<dim>::active_cell_iterator &cell,
               FEValues<dim>                                        &fe_values,
               FEFaceValues<dim>                                    &face_values,
-              const bool                                            at_points,
+              const Moduli                                          moduli,
               FullMatrix<double>                                   &matrix)
   {
     const FEValuesExtractors::Vector u(0);
@@ -161,17 +200,22 @@ namespace
     fe_values.reinit(cell);
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        const LameParameters m =
-          at_points
-            ? point_moduli(cell->material_id(), fe_values.quadrature_point(q))
-            : material_moduli(cell->material_id());
+        const Point<dim>             &p = fe_values.quadrature_point(q);
+        const LameParameters          m = moduli == Moduli::per_cell
+                                            ? material_moduli(cell->material_id())
+                                            : point_moduli(cell->material_id(), p);
+        const SymmetricTensor<4, dim> C =
+          moduli == Moduli::anisotropic ? point_tangent(cell->material_id(), p)
+                                        : SymmetricTensor<4, dim>();
         for (unsigned int i = 0; i < n; ++i)
           for (unsigned int j = 0; j < n; ++j)
             {
               const auto ei = fe_values[u].symmetric_gradient(i, q);
               const auto ej = fe_values[u].symmetric_gradient(j, q);
               matrix(i, j) +=
-                (m.lambda * trace(ei) * trace(ej) + 2 * m.mu * (ei * ej)) *
+                (moduli == Moduli::anisotropic
+                   ? ei * C * ej
+                   : m.lambda * trace(ei) * trace(ej) + 2 * m.mu * (ei * ej)) *
                 fe_values.JxW(q);
             }
       }
@@ -192,7 +236,7 @@ namespace
 
   /** The matrix assembled here, independently of the operator. */
   void
-  assemble_matrix(TestProblem &problem, const bool at_points)
+  assemble_matrix(TestProblem &problem, const Moduli moduli)
   {
     TrilinosWrappers::SparsityPattern pattern(problem.owned,
                                               problem.owned,
@@ -220,7 +264,7 @@ namespace
     for (const auto &cell : problem.dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_matrix(cell, fe_values, face_values, at_points, local);
+          cell_matrix(cell, fe_values, face_values, moduli, local);
           cell->get_dof_indices(dofs);
           problem.constraints.distribute_local_to_global(local,
                                                          dofs,
@@ -347,7 +391,7 @@ namespace
   check_products(const TestProblem                              &problem,
                  const Operator                                 &op,
                  const std::shared_ptr<MatrixFree<dim, double>> &matrix_free,
-                 const bool                                      at_points)
+                 const Moduli                                    moduli)
   {
     unsigned int                           failures = 0;
     std::mt19937                           random(17 + problem.rank);
@@ -371,7 +415,7 @@ namespace
         problem.matrix.vmult(yt, xt);
         const double difference = max_difference(problem, y, yt);
         const double norm = Utilities::MPI::max(yt.linfty_norm(), problem.comm);
-        if (!at_points)
+        if (moduli == Moduli::per_cell)
           {
             failures +=
               check_springs_visible(matrix_free, x, y, norm, problem.rank == 0);
@@ -383,8 +427,7 @@ namespace
         const bool ok = difference <= 1e-12 * norm;
         failures += ok ? 0 : 1;
         if (problem.rank == 0)
-          std::cout << (at_points ? "moduli at points" : "moduli per cell ")
-                    << ", trial " << trial << ": "
+          std::cout << name(moduli) << ", trial " << trial << ": "
                     << problem.dof_handler.n_dofs()
                     << " DoFs, max |K x - A x| / max |K x| = "
                     << difference / norm << (ok ? "  ok" : "  FAILED")
@@ -396,7 +439,7 @@ namespace
   /** The operator's diagonal (springs included) against the matrix's, on
    * unconstrained DoFs that no hanging-node constraint refers to. */
   unsigned int
-  check_diagonal(const TestProblem &problem, Operator &op, const bool at_points)
+  check_diagonal(const TestProblem &problem, Operator &op, const Moduli moduli)
   {
     op.compute_diagonal();
     const auto &inverse = op.get_matrix_diagonal_inverse()->get_vector();
@@ -417,8 +460,7 @@ namespace
     norm          = Utilities::MPI::max(norm, problem.comm);
     const bool ok = difference <= 1e-12 * norm;
     if (problem.rank == 0)
-      std::cout << (at_points ? "moduli at points" : "moduli per cell ")
-                << ", diagonal: max difference / max entry = "
+      std::cout << name(moduli) << ", diagonal: max difference / max entry = "
                 << difference / norm << (ok ? "  ok" : "  FAILED") << std::endl;
     return ok ? 0 : 1;
   }
@@ -438,16 +480,32 @@ namespace
                               : "quarter annulus (curved cells):")
                 << std::endl;
     unsigned int failures = 0;
-    for (const bool at_points : {false, true})
+    for (const Moduli moduli :
+         {Moduli::per_cell, Moduli::at_points, Moduli::anisotropic})
       {
-        assemble_matrix(problem, at_points);
+        assemble_matrix(problem, moduli);
         const auto matrix_free = make_matrix_free(problem);
-        failures += check_cell_batches(*matrix_free,
-                                       rectangle,
-                                       problem.rank == 0 && !at_points);
+        failures +=
+          check_cell_batches(*matrix_free,
+                             rectangle,
+                             problem.rank == 0 && moduli == Moduli::per_cell);
         Operator op;
         op.initialize(matrix_free);
-        if (at_points)
+        if (moduli == Moduli::anisotropic)
+          {
+            FEValues<dim> points(problem.mapping,
+                                 problem.fe,
+                                 QGauss<dim>(degree + 1),
+                                 update_quadrature_points);
+            op.set_point_tangents(
+              [&](const typename Operator::CellIterator &cell,
+                  const unsigned int                     q) {
+                points.reinit(cell);
+                return point_tangent(cell->material_id(),
+                                     points.quadrature_point(q));
+              });
+          }
+        else if (moduli == Moduli::at_points)
           {
             FEValues<dim> points(problem.mapping,
                                  problem.fe,
@@ -465,8 +523,8 @@ namespace
             return material_moduli(cell->material_id());
           });
         op.set_vertical_springs(springs);
-        failures += check_products(problem, op, matrix_free, at_points);
-        failures += check_diagonal(problem, op, at_points);
+        failures += check_products(problem, op, matrix_free, moduli);
+        failures += check_diagonal(problem, op, moduli);
       }
     return failures;
   }

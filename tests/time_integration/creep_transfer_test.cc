@@ -1,6 +1,8 @@
 /**
- * The creep-strain history field (CreepStrain) under mesh changes, on any
- * number of ranks (issue 15, verification 4):
+ * The history field of the rock laws at the cell quadrature points
+ * (CellHistory), here with five named components (a creep strain and one
+ * more, as a law that creeps and yields would keep), under mesh changes,
+ * on any number of ranks (issues 15 and 50, verification 4):
  * 1. A field that is a polynomial of degree 2 in each coordinate (what a
  *    DG field on 3 x 3 Gauss nodes represents exactly) survives ten cycles
  *    of random refinement and coarsening to round-off (1e-12 relative) at
@@ -18,7 +20,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_generator.h>
 
-#include <lithostress/materials/creep_strain.h>
+#include <lithostress/materials/cell_history.h>
 
 #include <cmath>
 #include <iostream>
@@ -28,9 +30,14 @@ using namespace lithostress;
 
 namespace
 {
-  constexpr unsigned int n_points_1d = 3;
-  const MappingQ1<2>     mapping;
-  const FE_Q<2>          linear(1);
+  constexpr unsigned int         n_points_1d = 3;
+  const std::vector<std::string> names       = {"creep_xx",
+                                                "creep_yy",
+                                                "creep_xy",
+                                                "creep_zz",
+                                                "plastic_strain"};
+  const MappingQ1<2>             mapping;
+  const FE_Q<2>                  linear(1);
 
   /** Component c of a field at x: a polynomial of degree 2 per coordinate
    * (@p smooth false), or a smooth non-polynomial one. */
@@ -50,7 +57,7 @@ namespace
    * values at the cell's nodes. */
   template <typename Operation>
   void
-  for_owned_cells(const CreepStrain<2>   &creep,
+  for_owned_cells(const CellHistory<2>   &creep,
                   const Triangulation<2> &tria,
                   const bool              smooth,
                   const Operation        &f)
@@ -59,21 +66,21 @@ namespace
                        linear,
                        creep.quadrature(),
                        update_quadrature_points);
-    std::vector<Vector<double>> exact(
-      creep.quadrature().size(), Vector<double>(CreepStrain<2>::n_components));
+    std::vector<Vector<double>> exact(creep.quadrature().size(),
+                                      Vector<double>(creep.n_components()));
     for (const auto &cell : tria.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           values.reinit(cell);
           for (unsigned int q = 0; q < exact.size(); ++q)
-            for (unsigned int c = 0; c < CreepStrain<2>::n_components; ++c)
+            for (unsigned int c = 0; c < creep.n_components(); ++c)
               exact[q][c] = field_value(values.quadrature_point(q), c, smooth);
           f(cell, exact);
         }
   }
 
   void
-  set_field(CreepStrain<2>         &creep,
+  set_field(CellHistory<2>         &creep,
             const Triangulation<2> &tria,
             const bool              smooth)
   {
@@ -88,7 +95,7 @@ namespace
 
   /** Largest |stored − exact| at the nodes, over all ranks. */
   double
-  node_error(const CreepStrain<2>   &creep,
+  node_error(const CellHistory<2>   &creep,
              const Triangulation<2> &tria,
              const bool              smooth)
   {
@@ -98,7 +105,7 @@ namespace
       creep, tria, smooth, [&](const auto &cell, const auto &exact) {
         creep.get(cell, stored);
         for (unsigned int q = 0; q < stored.size(); ++q)
-          for (unsigned int c = 0; c < CreepStrain<2>::n_components; ++c)
+          for (unsigned int c = 0; c < creep.n_components(); ++c)
             error = std::max(error, std::abs(stored[q][c] - exact[q][c]));
       });
     return Utilities::MPI::max(error, tria.get_communicator());
@@ -158,7 +165,7 @@ main(int argc, char *argv[])
     parallel::distributed::Triangulation<2> tria(comm);
     GridGenerator::hyper_cube(tria, -1, 1);
     tria.refine_global(3);
-    CreepStrain<2> creep(tria, n_points_1d);
+    CellHistory<2> creep(tria, n_points_1d, names);
     creep.setup();
     set_field(creep, tria, false);
     unsigned int coarsened_cells = 0;
@@ -195,7 +202,7 @@ main(int argc, char *argv[])
       parallel::distributed::Triangulation<2> tria(comm);
       GridGenerator::hyper_cube(tria, -1, 1);
       tria.refine_global(level);
-      CreepStrain<2> creep(tria, n_points_1d);
+      CellHistory<2> creep(tria, n_points_1d, names);
       creep.setup();
       set_field(creep, tria, true);
       for (const bool coarsen : {true, false})
@@ -237,7 +244,7 @@ main(int argc, char *argv[])
       if (mode == "save")
         {
           make_checkpoint_mesh(tria);
-          CreepStrain<2> creep(tria, n_points_1d);
+          CellHistory<2> creep(tria, n_points_1d, names);
           creep.setup();
           set_field(creep, tria, true);
           creep.prepare_for_checkpoint();
@@ -249,7 +256,7 @@ main(int argc, char *argv[])
       else
         {
           tria.load(file);
-          CreepStrain<2> creep(tria, n_points_1d);
+          CellHistory<2> creep(tria, n_points_1d, names);
           creep.load_from_checkpoint();
           const double error = node_error(creep, tria, true);
           report(error == 0,

@@ -23,8 +23,9 @@ namespace lithostress
    *
    * In a step of the visco-elastic loop the stiffness is that of the step
    * moduli (StressModel::step_moduli(), the relaxed shear modulus) and the
-   * history strain c* of the step (MaxwellRheology) adds the initial-strain
-   * term −∫ ε(v) : σ(c*) dx to the right-hand side.
+   * laws' history h* of the step (MaxwellRheology: the history strain c*)
+   * adds −∫ ε(v) : σ_h(h*) dx to the right-hand side
+   * (StressModel::history_stress()).
    */
   template <int dim>
   class ElasticAssembler
@@ -34,12 +35,12 @@ namespace lithostress
                      const StressModel<dim>        &stress_model,
                      const LoadCollection<dim>     &loads);
 
-    /** Assemble with the history strain @p history of a time step
+    /** Assemble with the laws' history @p history of a time step
      * (nullptr: none); the field lives on the cells' quadrature points. */
     void
-    set_history_strain(const CreepStrain<dim> *history)
+    set_cell_history(const CellHistory<dim> *history)
     {
-      history_strain = history;
+      cell_history = history;
     }
 
     /** Assemble matrix (if @p with_matrix) and right-hand side. */
@@ -120,17 +121,20 @@ namespace lithostress
                    Vector<double>                   &cell_rhs);
 
     /**
-     * Add the initial-strain term −∫ ε(φ_i) : σ0 dx of the 3-D strains
-     * @p strains (per quadrature point of @p fe_values, as
-     * CreepStrain components), whose stresses σ0 follow from @p moduli, to
-     * @p cell_rhs.
+     * Add the history's term −∫ ε(φ_i) : σ_h dx to @p cell_rhs: @p records
+     * are the cell history at the quadrature points of @p fe_values (a
+     * cell of material @p id), σ_h their stress
+     * (StressModel::history_stress(), of the current step or with
+     * @p of_state of a state).
      */
     static void
-    add_initial_strain_terms(const FEValues<dim>               &fe_values,
-                             const FEValuesExtractors::Vector  &displacement,
-                             const ElasticModuli<dim>          &moduli,
-                             const std::vector<Vector<double>> &strains,
-                             Vector<double>                    &cell_rhs);
+    add_history_terms(const StressModel<dim>            &stress_model,
+                      const FEValues<dim>               &fe_values,
+                      const FEValuesExtractors::Vector  &displacement,
+                      const types::material_id           id,
+                      const std::vector<Vector<double>> &records,
+                      const bool                         of_state,
+                      Vector<double>                    &cell_rhs);
 
     /** The cell values the assembly needs, for @p fe_space. */
     static hp::FEValues<dim>
@@ -156,7 +160,7 @@ namespace lithostress
     const FiniteElementSpace<dim> &fe_space;
     const StressModel<dim>        &stress_model;
     const LoadCollection<dim>     &loads;
-    const CreepStrain<dim>        *history_strain = nullptr;
+    const CellHistory<dim>        *cell_history = nullptr;
   };
 } // namespace lithostress
 

@@ -42,6 +42,10 @@ namespace lithostress
     std::vector<std::string>
     history_names() const override;
 
+    /** The norm of the 3-D creep-strain tensor. */
+    double
+    history_norm(const ArrayView<const double> &h) const override;
+
     const ElasticModuli<dim> &
     elastic_moduli() const override
     {

@@ -10,6 +10,7 @@
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/material.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -116,6 +117,22 @@ namespace lithostress
     history_names() const
     {
       return {};
+    }
+
+    /**
+     * The size of a history (or of its change or rate) @p h, one value per
+     * history_names(): what the time loop's step control measures the
+     * creep increment and its local error with (CreepIntegrator). The
+     * Euclidean norm unless the law says otherwise (a tensor's norm for a
+     * creep strain).
+     */
+    virtual double
+    history_norm(const ArrayView<const double> &h) const
+    {
+      double sum = 0;
+      for (const double v : h)
+        sum += v * v;
+      return std::sqrt(sum);
     }
 
     /** The instantaneous (elastic) response. */

@@ -4,8 +4,9 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <lithostress/materials/creep_strain.h>
+#include <lithostress/materials/cell_history.h>
 #include <lithostress/materials/elastic_moduli.h>
+#include <lithostress/materials/history_layout.h>
 #include <lithostress/materials/initial_stress_source.h>
 #include <lithostress/materials/material.h>
 #include <lithostress/materials/rheology.h>
@@ -26,10 +27,11 @@ namespace lithostress
    * here, so that an initial strain enters every result once and in the
    * same way.
    *
-   * With creeping materials (thesis §3.9) the model also holds the creep
-   * history (attach_creep_strain()): every reported stress is then the
-   * law's with the history at the point, and a time step's linear system
-   * uses the step moduli of its laws (set_time_step()).
+   * With creeping materials (thesis §3.9) the model also holds the laws'
+   * history at the cell quadrature points (attach_cell_history(), laid out
+   * by history_layout()): every reported stress is then the law's with the
+   * history at the point, and a time step's linear system uses the step
+   * moduli of its laws (set_time_step()).
    */
   template <int dim>
   class StressModel
@@ -51,17 +53,17 @@ namespace lithostress
            const Point<dim>              &p,
            const SymmetricTensor<2, dim> &strain) const;
 
-    /** The stress at @p p for strain @p strain and creep strain @p creep
-     * (3-D, deviatoric). */
+    /** The stress at @p p for strain @p strain and the history @p history
+     * of material @p id's law (its history_names()). */
     StressState<dim>
     stress(const types::material_id       id,
            const Point<dim>              &p,
            const SymmetricTensor<2, dim> &strain,
-           const SymmetricTensor<2, 3>   &creep) const;
+           const ArrayView<const double> &history) const;
 
     /**
      * The stress at the point @p p of @p cell whose unit-cell coordinates
-     * are @p unit: the creep strain attached to the model, if any, is
+     * are @p unit: the cell history attached to the model, if any, is
      * evaluated there. What every reported stress goes through.
      */
     StressState<dim>
@@ -79,6 +81,34 @@ namespace lithostress
     evaluate(const types::material_id id,
              RheologyInputs<dim>     &in,
              RheologyOutputs<dim>    &out) const;
+
+    /**
+     * The stress of the history @p history of material @p id's law alone —
+     * at zero strain, without the loads' initial stresses — in the current
+     * step's linear system, or with @p of_state in a state: the history's
+     * share of the right-hand side, −∫ ε(v) : σ_h (a creep strain is an
+     * initial strain, thesis eq. 3.38).
+     */
+    StressState<dim>
+    history_stress(const types::material_id       id,
+                   const Point<dim>              &p,
+                   const ArrayView<const double> &history,
+                   const bool                     of_state = false) const;
+
+    /** Where each material's history lies in the records of the cell
+     * history (the union of the laws' history_names()). */
+    const HistoryLayout &
+    history_layout() const
+    {
+      return layout;
+    }
+
+    /** Whether material @p id's law keeps a history. */
+    bool
+    has_history(const types::material_id id) const
+    {
+      return layout.size(id) > 0;
+    }
 
     /** The rock law of material @p id. */
     const Rheology<dim> &
@@ -164,19 +194,19 @@ namespace lithostress
       return version;
     }
 
-    /** Include the creep strain @p creep in every reported stress
-     * (nullptr: none). */
+    /** Include the history @p history (laid out by history_layout()) in
+     * every reported stress (nullptr: none). */
     void
-    attach_creep_strain(const CreepStrain<dim> *creep)
+    attach_cell_history(const CellHistory<dim> *history)
     {
-      creep_strain = creep;
+      cell_history = history;
     }
 
-    /** The attached creep strain, or nullptr. */
-    const CreepStrain<dim> *
-    attached_creep_strain() const
+    /** The attached cell history, or nullptr. */
+    const CellHistory<dim> *
+    attached_cell_history() const
     {
-      return creep_strain;
+      return cell_history;
     }
 
     /** Whether any load carries an initial strain. */
@@ -198,13 +228,12 @@ namespace lithostress
                    const ElasticModuli<dim> &moduli) const;
 
     std::map<types::material_id, std::unique_ptr<Rheology<dim>>> rheology_of;
-    /** The number of history components of each material's law, and as
-     * many zeros as the largest has (the history of a state without
-     * one). */
-    std::map<types::material_id, unsigned int>    history_size_of;
+    /** Where each law's history lies in a record, and as many zeros as
+     * the largest history has (the history of a state without one). */
+    HistoryLayout                                 layout;
     std::vector<double>                           zero_history;
     std::vector<const InitialStressSource<dim> *> initial_stress_loads;
-    const CreepStrain<dim>                       *creep_strain = nullptr;
+    const CellHistory<dim>                       *cell_history = nullptr;
     double             step_length = 0, step_theta = 1;
     unsigned long long version = 0;
   };

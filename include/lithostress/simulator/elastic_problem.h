@@ -73,12 +73,12 @@ namespace lithostress
     update_constraints(const double time);
 
     /**
-     * Assemble at model time @p time with the history strain @p history of
+     * Assemble at model time @p time with the laws' history @p history of
      * a time step (nullptr: none): the loads' mesh integrals once per mesh,
      * the matrix only when the operator changed.
      */
     void
-    assemble(const double time, const CreepStrain<dim> *history = nullptr);
+    assemble(const double time, const CellHistory<dim> *history = nullptr);
 
     /**
      * Solve. A frictional fault's slip is committed to its history if
@@ -254,8 +254,8 @@ namespace lithostress
     unsigned long long loads_prepared_for = ~0ULL;
     /** The operator version the assembled matrix belongs to. */
     unsigned long long matrix_version = ~0ULL;
-    /** The history strain of the last assembly (nullptr: none). */
-    const CreepStrain<dim> *assembled_history = nullptr;
+    /** The laws' history of the last assembly (nullptr: none). */
+    const CellHistory<dim> *assembled_history = nullptr;
     /** The model time of the last assembly. */
     double assembled_time = 0;
     /** The time loop's last solutions on this mesh, where its iterative

@@ -43,11 +43,11 @@ namespace lithostress
       const SimulatorAccess<dim> &access;
       CreepIntegrator<dim>       &creep;
       /** Its step moduli are set per step, its creep strain attached. */
-      StressModel<dim>           &stress_model;
+      StressModel<dim> &stress_model;
       /** The model's parameters (kept with every checkpoint). */
-      ParameterHandler           &prm;
+      ParameterHandler &prm;
       /** Open log.txt and write parameters.prm (the Simulator's). */
-      std::function<void()>       start_output;
+      std::function<void()> start_output;
     };
 
     ViscoelasticTimeLoop(const TimeStepping &settings, const Parts &parts);
@@ -64,7 +64,7 @@ namespace lithostress
     unsigned int
     solve_system(const bool              new_mesh,
                  const double            time,
-                 const CreepStrain<dim> *history,
+                 const CellHistory<dim> *history,
                  const bool              commit_slip);
 
     /** Try the step from t to @p t_new; false if the step control rejects

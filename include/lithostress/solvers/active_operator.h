@@ -37,17 +37,18 @@ namespace lithostress
     using CellModuli = std::function<LameParameters(
       const typename DoFHandler<dim>::cell_iterator &cell)>;
 
-    /** Moduli at quadrature point q of an active cell. */
-    using PointModuli = std::function<
-      LameParameters(const typename DoFHandler<dim>::cell_iterator &cell,
-                     const unsigned int                             q)>;
+    /** The tangent dσ/dε at quadrature point q of an active cell. */
+    using PointTangent = std::function<SymmetricTensor<4, dim>(
+      const typename DoFHandler<dim>::cell_iterator &cell,
+      const unsigned int                             q)>;
 
     virtual ~ActiveOperator() = default;
 
-    /** Take the moduli at each quadrature point from @p moduli instead of
-     * per cell (a law whose tangent varies from point to point). */
+    /** Take the tangent at each quadrature point from @p tangent instead
+     * of moduli per cell (a law whose tangent varies from point to point,
+     * isotropic or not; ElasticOperator::set_point_tangents()). */
     virtual void
-    set_point_moduli(const PointModuli &moduli) = 0;
+    set_point_tangents(const PointTangent &tangent) = 0;
 
     /** dst = A src (constrained entries: the identity). */
     virtual void

@@ -47,10 +47,10 @@ namespace lithostress
       }
 
       void
-      set_point_moduli(
-        const typename ActiveOperator<dim>::PointModuli &moduli) override
+      set_point_tangents(
+        const typename ActiveOperator<dim>::PointTangent &tangent) override
       {
-        op.set_point_moduli(moduli);
+        op.set_point_tangents(tangent);
       }
 
       void

@@ -91,6 +91,22 @@ namespace lithostress
     void
     set_point_moduli(const PointModuli &moduli);
 
+    /** The tangent dσ/dε at quadrature point @p q of cell @p cell. */
+    using PointTangent =
+      std::function<SymmetricTensor<4, dim>(const CellIterator &cell,
+                                            const unsigned int  q)>;
+
+    /**
+     * Take any tangent at each quadrature point from @p tangent (a law
+     * whose tangent varies in space and need not be isotropic, such as the
+     * consistent tangent of a non-linear law): σ = C_q : ε. Where every
+     * tangent is isotropic (to 1e-12 of its size) they are stored as
+     * moduli, as set_point_moduli(); else as tensors (dim² (dim+1)²/4
+     * numbers per point: 9 in 2-D).
+     */
+    void
+    set_point_tangents(const PointTangent &tangent);
+
     /**
      * Vertical spring stiffnesses k [Pa/m] per boundary id; the term is
      * k |n_y| on every face of that boundary part (the MatrixFree object
@@ -158,9 +174,11 @@ namespace lithostress
     number
     spring_stiffness(const types::boundary_id id) const;
 
-    AlignedVector<VectorizedArrayType>   lambda_cell, mu_cell;
-    Table<2, VectorizedArrayType>        lambda_point, mu_point;
-    bool                                 moduli_at_points = false;
+    AlignedVector<VectorizedArrayType> lambda_cell, mu_cell;
+    Table<2, VectorizedArrayType>      lambda_point, mu_point;
+    bool                               moduli_at_points = false;
+    Table<2, SymmetricTensor<4, dim, VectorizedArrayType>> tangent_point;
+    bool                                 tangents_at_points = false;
     std::map<types::boundary_id, double> springs;
   };
 } // namespace lithostress

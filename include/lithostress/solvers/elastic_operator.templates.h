@@ -24,6 +24,8 @@ namespace lithostress
     lambda_point.reinit(0, 0);
     mu_point.reinit(0, 0);
     moduli_at_points = false;
+    tangent_point.reinit(0, 0);
+    tangents_at_points = false;
     springs.clear();
     Base::clear();
   }
@@ -55,6 +57,8 @@ namespace lithostress
     lambda_point.reinit(0, 0);
     mu_point.reinit(0, 0);
     moduli_at_points = false;
+    tangent_point.reinit(0, 0);
+    tangents_at_points = false;
   }
 
   template <int dim,
@@ -84,6 +88,64 @@ namespace lithostress
     lambda_cell.clear();
     mu_cell.clear();
     moduli_at_points = true;
+    tangent_point.reinit(0, 0);
+    tangents_at_points = false;
+  }
+
+  template <int dim,
+            int fe_degree,
+            typename number,
+            typename VectorizedArrayType>
+  void
+  ElasticOperator<dim, fe_degree, number, VectorizedArrayType>::
+    set_point_tangents(const PointTangent &tangent)
+  {
+    const MatrixFreeType &data     = *this->data;
+    const unsigned int    batches  = data.n_cell_batches();
+    const unsigned int    n_points = Utilities::pow(fe_degree + 1, dim);
+    Table<2, SymmetricTensor<4, dim, VectorizedArrayType>> tangents(batches,
+                                                                    n_points);
+    Table<2, VectorizedArrayType> lambda(batches, n_points),
+      mu(batches, n_points);
+    bool isotropic = true;
+    for (unsigned int b = 0; b < batches; ++b)
+      for (unsigned int v = 0; v < data.n_active_entries_per_cell_batch(b); ++v)
+        {
+          const CellIterator cell = data.get_cell_iterator(b, v);
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              const SymmetricTensor<4, dim> C = tangent(cell, q);
+              lambda(b, q)[v]                 = C[0][0][1][1];
+              mu(b, q)[v]                     = C[0][1][0][1];
+              SymmetricTensor<4, dim> iso;
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = 0; j < dim; ++j)
+                  iso[i][i][j][j] = C[0][0][1][1];
+              iso += 2 * C[0][1][0][1] * identity_tensor<dim>();
+              isotropic = isotropic && (C - iso).norm() <= 1e-12 * C.norm();
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = i; j < dim; ++j)
+                  for (unsigned int k = 0; k < dim; ++k)
+                    for (unsigned int l = k; l < dim; ++l)
+                      tangents(b, q)[i][j][k][l][v] = C[i][j][k][l];
+            }
+        }
+    lambda_cell.clear();
+    mu_cell.clear();
+    if (isotropic)
+      {
+        lambda_point.swap(lambda);
+        mu_point.swap(mu);
+        moduli_at_points = true;
+        tangent_point.reinit(0, 0);
+        tangents_at_points = false;
+        return;
+      }
+    tangent_point.swap(tangents);
+    tangents_at_points = true;
+    lambda_point.reinit(0, 0);
+    mu_point.reinit(0, 0);
+    moduli_at_points = false;
   }
 
   template <int dim,
@@ -122,7 +184,7 @@ namespace lithostress
   ElasticOperator<dim, fe_degree, number, VectorizedArrayType>::
     do_cell_integral(Evaluator &phi) const
   {
-    if (moduli_at_points ||
+    if (moduli_at_points || tangents_at_points ||
         phi.get_cell_type() != internal::MatrixFreeFunctions::cartesian)
       {
         do_general_cell_integral(phi);
@@ -196,7 +258,22 @@ namespace lithostress
   ElasticOperator<dim, fe_degree, number, VectorizedArrayType>::
     do_general_cell_integral(Evaluator &phi) const
   {
-    const unsigned int  cell   = phi.get_current_cell_index();
+    const unsigned int cell = phi.get_current_cell_index();
+    if (tangents_at_points)
+      {
+        // σ = C_q : ε, submitted as a full tensor.
+        for (const unsigned int q : phi.quadrature_point_indices())
+          {
+            const SymmetricTensor<2, dim, VectorizedArrayType> stress =
+              tangent_point(cell, q) * symmetrize(phi.get_gradient(q));
+            Tensor<2, dim, VectorizedArrayType> submitted;
+            for (unsigned int d = 0; d < dim; ++d)
+              for (unsigned int e = 0; e < dim; ++e)
+                submitted[d][e] = stress[d][e];
+            phi.submit_gradient(submitted, q);
+          }
+        return;
+      }
     VectorizedArrayType lambda = 0, mu = 0;
     if (!moduli_at_points)
       {
@@ -357,21 +434,37 @@ namespace lithostress
               scalar.evaluate(EvaluationFlags::gradients);
               std::array<VectorizedArrayType, dim> entry{};
               for (const unsigned int q : scalar.quadrature_point_indices())
-                {
-                  const VectorizedArrayType lambda = moduli_at_points
-                                                       ? lambda_point(cell, q)
-                                                       : lambda_cell[cell];
-                  const VectorizedArrayType mu =
-                    moduli_at_points ? mu_point(cell, q) : mu_cell[cell];
-                  const Tensor<1, dim, VectorizedArrayType> gradient =
-                    scalar.get_gradient(q);
-                  const VectorizedArrayType JxW   = scalar.JxW(q);
-                  const VectorizedArrayType norm2 = gradient.norm_square();
-                  for (unsigned int c = 0; c < dim; ++c)
-                    entry[c] +=
-                      ((lambda + mu) * gradient[c] * gradient[c] + mu * norm2) *
-                      JxW;
-                }
+                if (tangents_at_points)
+                  {
+                    // ε(N_a e_c) : C_q : ε(N_a e_c) for any tangent.
+                    const Tensor<1, dim, VectorizedArrayType> gradient =
+                      scalar.get_gradient(q);
+                    for (unsigned int c = 0; c < dim; ++c)
+                      {
+                        Tensor<2, dim, VectorizedArrayType> G;
+                        G[c] = gradient;
+                        const SymmetricTensor<2, dim, VectorizedArrayType> eps =
+                          symmetrize(G);
+                        entry[c] += (eps * (tangent_point(cell, q) * eps)) *
+                                    scalar.JxW(q);
+                      }
+                  }
+                else
+                  {
+                    const VectorizedArrayType lambda = moduli_at_points
+                                                         ? lambda_point(cell, q)
+                                                         : lambda_cell[cell];
+                    const VectorizedArrayType mu =
+                      moduli_at_points ? mu_point(cell, q) : mu_cell[cell];
+                    const Tensor<1, dim, VectorizedArrayType> gradient =
+                      scalar.get_gradient(q);
+                    const VectorizedArrayType JxW   = scalar.JxW(q);
+                    const VectorizedArrayType norm2 = gradient.norm_square();
+                    for (unsigned int c = 0; c < dim; ++c)
+                      entry[c] += ((lambda + mu) * gradient[c] * gradient[c] +
+                                   mu * norm2) *
+                                  JxW;
+                  }
               for (unsigned int c = 0; c < dim; ++c)
                 phi.begin_dof_values()[c * n + a] = entry[c];
             }

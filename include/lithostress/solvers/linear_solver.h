@@ -12,7 +12,7 @@
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/discretization/linear_system.h>
 #include <lithostress/loads/load_collection.h>
-#include <lithostress/materials/creep_strain.h>
+#include <lithostress/materials/cell_history.h>
 #include <lithostress/materials/stress_model.h>
 
 #include <functional>
@@ -136,10 +136,10 @@ namespace lithostress
     /** Changes whenever the operator does (a new mesh, other moduli): a
      * kept set-up of another version is rebuilt. */
     unsigned long long operator_version = 0;
-    /** The history strain of a visco-elastic step the system was assembled
+    /** The laws' history of a visco-elastic step the system was assembled
      * with (nullptr: none), for a solver that assembles again with other
      * constraints (exact fault contact). */
-    const CreepStrain<dim> *history_strain = nullptr;
+    const CellHistory<dim> *cell_history = nullptr;
     /** Where an iterative solver starts (owned entries, constraints
      * distributed; nullptr: from zero): the time loop's prediction of the
      * solution from its last steps (SolutionPredictor). CG on the

@@ -138,17 +138,14 @@ namespace lithostress
     }
 
     /**
-     * The moduli at quadrature point q (of QGauss(@p n_points_1d)) of an
-     * active cell: the isotropic tangent StressModel::tangent() there, for
-     * a law whose tangent varies from point to point. The matrix-free
-     * operator applies isotropic moduli: a tangent that is not isotropic
-     * (to 1e-10 of its size) is a ComputationError that names the law and
-     * the solvers that assemble any tangent.
+     * The tangent at quadrature point q (of QGauss(@p n_points_1d)) of an
+     * active cell: StressModel::tangent() there, for a law whose tangent
+     * varies from point to point (ActiveOperator::set_point_tangents()).
      */
     template <int dim>
     auto
-    point_moduli(const DiscreteProblem<dim> &problem,
-                 const unsigned int          n_points_1d)
+    point_tangents(const DiscreteProblem<dim> &problem,
+                   const unsigned int          n_points_1d)
     {
       using TriaCell = typename Triangulation<dim>::cell_iterator;
       auto fe        = std::make_shared<FE_Q<dim>>(1);
@@ -160,34 +157,15 @@ namespace lithostress
       auto last =
         std::make_shared<std::pair<bool, TriaCell>>(false, TriaCell());
       return
-        [&problem, fe, values, last](const auto        &cell,
-                                     const unsigned int q) -> LameParameters {
+        [&problem, fe, values, last](const auto &cell, const unsigned int q)
+          -> SymmetricTensor<4, dim> {
           if (!last->first || last->second != TriaCell(cell))
             {
               *last = {true, TriaCell(cell)};
               values->reinit(last->second);
             }
-          const SymmetricTensor<4, dim> C =
-            problem.stress_model.tangent(cell->material_id(),
-                                         values->quadrature_point(q));
-          LameParameters lame;
-          lame.lambda = C[0][0][1][1];
-          lame.mu     = C[0][1][0][1];
-          SymmetricTensor<4, dim> isotropic;
-          for (unsigned int i = 0; i < dim; ++i)
-            for (unsigned int j = 0; j < dim; ++j)
-              isotropic[i][i][j][j] = lame.lambda;
-          isotropic += 2 * lame.mu * identity_tensor<dim>();
-          if ((C - isotropic).norm() > 1e-10 * C.norm())
-            throw ComputationError(
-              "Solver/Type = matrix-free multigrid applies isotropic moduli, "
-              "and the tangent of material <" +
-              problem.stress_model.materials(cell->material_id()).name +
-              "> is not isotropic at (" +
-              std::to_string(values->quadrature_point(q)[0]) + ", " +
-              std::to_string(values->quadrature_point(q)[1]) +
-              "): choose AMG or direct");
-          return lame;
+          return problem.stress_model.tangent(cell->material_id(),
+                                              values->quadrature_point(q));
         };
     }
 

@@ -41,7 +41,8 @@ namespace lithostress
   /**
    * The visco-elastic loop's state besides the mesh and the fields: the
    * time, the step control, the rows written so far, the faults' history
-   * along them (FaultHistory::gather()'s records) and the
+   * along them (FaultHistory::gather()'s records), the components of the
+   * cell history attached to the mesh (HistoryLayout::names()) and the
    * postprocessors' named state.
    */
   struct LoopState
@@ -52,6 +53,7 @@ namespace lithostress
     double                             previous_dt = 0;
     std::vector<StepRecord>            steps;
     std::vector<double>                fault_history;
+    std::vector<std::string>           cell_history;
     std::map<std::string, std::string> postprocessors;
     /** The times of the solutions the SolutionPredictor knew, whose
      * vectors are attached to the mesh after the displacement (version 1;
@@ -64,7 +66,7 @@ namespace lithostress
     serialize(Archive &archive, const unsigned int version)
     {
       archive &step &linear_solves &time &dt &strain_scale &stress_scale
-        &previous_dt &steps &fault_history &postprocessors;
+        &previous_dt &steps &fault_history &cell_history &postprocessors;
       if (version > 0)
         archive &predictor_times;
     }

@@ -6,21 +6,26 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <lithostress/discretization/finite_element_space.h>
+#include <lithostress/materials/cell_history.h>
 #include <lithostress/materials/stress_model.h>
-#include <lithostress/materials/creep_strain.h>
 #include <lithostress/time_integration/time_stepping.h>
 
 #include <algorithm>
 #include <functional>
+#include <vector>
 
 namespace lithostress
 {
   using namespace dealii;
 
   /**
-   * The update of the creep-strain history at the quadrature points in one
+   * The update of the laws' history at the cell quadrature points in one
    * time step (thesis §3.9, doc/equations.md §10), for the integrators of
-   * TimeStepping. The implicit ones share one form: before the solve a
+   * TimeStepping. Each law's history h is a set of named components
+   * (Rheology::history_names(), in the records of a CellHistory); what
+   * follows is written for MaxwellRheology's creep strain c, and holds for
+   * any history whose rate the law gives (RheologyOutputs::history_rate).
+   * The implicit schemes share one form: before the solve a
    * history strain c* (begin_step()), the solve with the relaxed moduli
    * G/(1 + w Δt/τ) and c* as initial strain, after it
    * c_{n+1} = c* + w Δt s_{n+1}/(2η) with s_{n+1} the deviator of the
@@ -35,7 +40,7 @@ namespace lithostress
    *   each new solution (update_thesis_history()) until the stress stops
    *   changing; then c_{n+1} = c_n + Δc (finish_thesis_step()).
    * s_n is the deviatoric stress of the start of the step (elastic moduli,
-   * creep strain c_n). Elastic materials keep c = 0.
+   * creep strain c_n). Materials whose law keeps no history are skipped.
    */
   template <int dim>
   class CreepIntegrator
@@ -53,33 +58,26 @@ namespace lithostress
      */
     struct Increment
     {
-      /** max ‖c_{n+1} − c_n‖ over the nodes. */
+      /** max ‖c_{n+1} − c_n‖ over the nodes (Rheology::history_norm()). */
       double creep_change = 0;
       /** max (Δt/2) ‖ċ_{n+1} − ċ_n‖ over the nodes. */
       double local_error = 0;
-      /** max ‖s_{n+1}‖/(2G) over the nodes of Maxwell materials. */
+      /** max ‖s_{n+1}‖/(2G) = τ ‖ċ_{n+1}‖ over the nodes of creeping
+       * materials (τ: Rheology::relaxation_time()). */
       double elastic_strain = 0;
 
-      /** Include one node: creep strain @p c_old → @p c_new over a step of
-       * length @p dt with start and end rates @p rate_start, @p rate_end
-       * in a material of Maxwell time @p tau (s/(2G) = τ ċ). */
+      /** Include one node of a material with law @p law: history @p c_old
+       * → @p c_new over a step of length @p dt with start and end rates
+       * @p rate_start, @p rate_end. */
       void
-      add(const SymmetricTensor<2, 3> &c_old,
-          const SymmetricTensor<2, 3> &c_new,
-          const SymmetricTensor<2, 3> &rate_start,
-          const SymmetricTensor<2, 3> &rate_end,
-          const double                 tau,
-          const double                 dt,
-          const bool                   second_order = false)
-      {
-        creep_change = std::max(creep_change, (c_new - c_old).norm());
-        local_error  = std::max(
-          local_error,
-          second_order
-             ? 1.6 * (c_new - c_old - 0.5 * dt * (rate_start + rate_end)).norm()
-             : 0.5 * dt * (rate_end - rate_start).norm());
-        elastic_strain = std::max(elastic_strain, tau * rate_end.norm());
-      }
+      add(const Rheology<dim>           &law,
+          const ArrayView<const double> &c_old,
+          const ArrayView<const double> &c_new,
+          const ArrayView<const double> &rate_start,
+          const ArrayView<const double> &rate_end,
+          const double                   dt,
+          const bool                     second_order = false);
+
 
       /** local_error relative to @p scale, the largest elastic strain of
        * the run so far (0 if nothing has been stressed). */
@@ -88,25 +86,30 @@ namespace lithostress
       {
         return scale > 0 ? local_error / scale : 0.0;
       }
+
+      /** Room for a combination of histories. */
+      std::vector<double> work;
     };
 
     /** History fields on @p triangulation with the assembly's Gauss
-     * points (@p n_points_1d per direction). */
+     * points (@p n_points_1d per direction), each record laid out by
+     * @p layout (StressModel::history_layout()). */
     CreepIntegrator(
       const parallel::distributed::Triangulation<dim> &triangulation,
-      const unsigned int                               n_points_1d);
+      const unsigned int                               n_points_1d,
+      const HistoryLayout                             &layout);
 
-    /** The creep strain c_n: the history that persists (transferred with
-     * the mesh, written to checkpoints). */
-    CreepStrain<dim> &
-    creep_strain()
+    /** The history h_n (the creep strain c_n): what persists (transferred
+     * with the mesh, written to checkpoints). */
+    CellHistory<dim> &
+    cell_history()
     {
       return creep;
     }
 
-    /** The history strain c* the step's assembly uses. */
-    const CreepStrain<dim> &
-    history_strain() const
+    /** The history h* (the history strain c*) the step's assembly uses. */
+    const CellHistory<dim> &
+    step_history() const
     {
       return history;
     }
@@ -252,12 +255,12 @@ namespace lithostress
 
   private:
     /**
-     * Call @p visit(cell, points, strains) for every owned cell of a
-     * Maxwell material, with the nodes (quadrature points) and the strain
+     * Call @p visit(cell, points, strains) for every owned cell whose law
+     * keeps a history, with the nodes (quadrature points) and the strain
      * of @p solution at them.
      */
     void
-    for_each_viscous_cell(
+    for_each_cell_with_history(
       const DoFHandler<dim>               &dof_handler,
       const FiniteElementSpace<dim>       &fe_space,
       const StressModel<dim>              &stress_model,
@@ -266,6 +269,13 @@ namespace lithostress
         void(const typename Triangulation<dim>::active_cell_iterator &,
              const std::vector<Point<dim>> &,
              const std::vector<SymmetricTensor<2, dim>> &)> &visit) const;
+
+    /** Put material @p id's history values @p values into @p record
+     * (sized to the layout's records if it is not). */
+    void
+    store(const types::material_id   id,
+          const std::vector<double> &values,
+          Vector<double>            &record) const;
 
     /** The 3-D stress tensor of a stress state. */
     static SymmetricTensor<2, 3>
@@ -276,13 +286,15 @@ namespace lithostress
     all_ranks(const Increment &increment) const;
 
 
+    /** Where each law's history lies in a record. */
+    const HistoryLayout &layout;
     /** c_n, the step's history strain c*, the rates at the start and end
      * of the step, and c_{n−1}. */
-    CreepStrain<dim> creep, history, start_rate, end_rate, previous;
+    CellHistory<dim> creep, history, start_rate, end_rate, previous;
     /** Whether start_rate belongs to the current creep strain and
      * solution (false after a mesh change). */
     bool                                  start_rate_current = false;
-    typename CreepStrain<dim>::VectorType start_values;
+    typename CellHistory<dim>::VectorType start_values;
     /** The step length of begin_step(), and of the last accepted step. */
     double step = 0, previous_step = 0;
     /** Whether the step of begin_step() is a BDF2 step. */
