@@ -16,7 +16,7 @@ namespace lithostress
   SymmetricTensor<2, 3>
   CreepStrain<dim>::tensor(const ArrayView<const double> &c)
   {
-    Assert(c.size() >= n_components, ExcLowerRange(c.size(), n_components));
+    AssertDimension(c.size(), n_components);
     SymmetricTensor<2, 3> t;
     if constexpr (dim == 2)
       {
@@ -42,7 +42,7 @@ namespace lithostress
   CreepStrain<dim>::components(const SymmetricTensor<2, 3> &t,
                                const ArrayView<double>     &c)
   {
-    Assert(c.size() >= n_components, ExcLowerRange(c.size(), n_components));
+    AssertDimension(c.size(), n_components);
     if constexpr (dim == 2)
       {
         c[0] = t[0][0];

@@ -96,8 +96,6 @@ namespace lithostress
                               const std::vector<double> &values,
                               Vector<double>            &record) const
   {
-    if (record.size() != layout.names().size())
-      record.reinit(layout.names().size());
     layout.store(id, make_array_view(values), record);
   }
 

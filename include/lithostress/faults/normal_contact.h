@@ -119,7 +119,7 @@ namespace lithostress
     }
 
 
-    /** The bulk of @p problem (cells and loads, with its history strain)
+    /** The bulk of @p problem (cells and loads, with the laws' history)
      * into @p system with the problem's constraints and the closed nodes'
      * ties; the ties and the matrix's sparsity are made again only if the
      * open nodes changed since the last call. */

@@ -91,7 +91,7 @@ namespace lithostress
     void
     value(const typename Triangulation<dim>::active_cell_iterator &cell,
           const Point<dim>                                        &unit,
-          Vector<double>                                          &record) const;
+          Vector<double> &record) const;
 
     /** Set the values at the nodes of an owned @p cell. */
     void
@@ -134,6 +134,7 @@ namespace lithostress
       return dofs;
     }
 
+    /** The values of the nodes (ghosted). */
     const VectorType &
     values() const
     {
@@ -199,8 +200,8 @@ namespace lithostress
     const QGauss<dim>              nodes;
     /** The field's element (none without components). */
     const std::unique_ptr<const FESystem<dim>> fe;
-    DoFHandler<dim>     dofs;
-    VectorType          field;
+    DoFHandler<dim>                            dofs;
+    VectorType                                 field;
     std::unique_ptr<parallel::distributed::SolutionTransfer<dim, VectorType>>
       transfer;
   };

@@ -30,12 +30,12 @@ namespace lithostress
     static std::vector<std::string>
     names();
 
-    /** The 3-D tensor of the first n_components values of @p c. */
+    /** The 3-D tensor of the n_components values @p c. */
     static SymmetricTensor<2, 3>
     tensor(const ArrayView<const double> &c);
 
-    /** The components of @p t into the first n_components values of
-     * @p c (the inverse of tensor()). */
+    /** The components of @p t into the n_components values @p c (the
+     * inverse of tensor()). */
     static void
     components(const SymmetricTensor<2, 3> &t, const ArrayView<double> &c);
   };

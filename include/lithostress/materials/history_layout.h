@@ -19,8 +19,7 @@ namespace lithostress
    * (Rheology::history_names()), each name once, in the order the
    * materials first name them; a law reads and writes its own components,
    * in its own order. Materials whose laws name the same components share
-   * them, so that the history is continuous across their interface where
-   * the field is evaluated between nodes.
+   * them (one ParaView field per name).
    */
   class HistoryLayout
   {

@@ -42,7 +42,7 @@ namespace lithostress
       PostprocessorList<dim>     &postprocessors;
       const SimulatorAccess<dim> &access;
       CreepIntegrator<dim>       &creep;
-      /** Its step moduli are set per step, its creep strain attached. */
+      /** Its step moduli are set per step, the laws' history attached. */
       StressModel<dim> &stress_model;
       /** The model's parameters (kept with every checkpoint). */
       ParameterHandler &prm;

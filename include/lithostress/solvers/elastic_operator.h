@@ -100,9 +100,13 @@ namespace lithostress
      * Take any tangent at each quadrature point from @p tangent (a law
      * whose tangent varies in space and need not be isotropic, such as the
      * consistent tangent of a non-linear law): σ = C_q : ε. Where every
-     * tangent is isotropic (to 1e-12 of its size) they are stored as
-     * moduli, as set_point_moduli(); else as tensors (dim² (dim+1)²/4
-     * numbers per point: 9 in 2-D).
+     * tangent of this rank's cells is isotropic (to 1e-12 of its size)
+     * they are stored as moduli, as set_point_moduli(); else as tensors
+     * (dim² (dim+1)²/4 numbers per point: 9 in 2-D). Either applies the
+     * same tangent, so that ranks may choose differently. CG needs the
+     * tangents to have the major symmetry C_ijkl = C_klij (a law whose
+     * consistent tangent lacks it, a non-associated flow rule, needs
+     * another Krylov method).
      */
     void
     set_point_tangents(const PointTangent &tangent);

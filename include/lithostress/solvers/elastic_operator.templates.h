@@ -103,36 +103,35 @@ namespace lithostress
     const MatrixFreeType &data     = *this->data;
     const unsigned int    batches  = data.n_cell_batches();
     const unsigned int    n_points = Utilities::pow(fe_degree + 1, dim);
-    Table<2, SymmetricTensor<4, dim, VectorizedArrayType>> tangents(batches,
-                                                                    n_points);
+    // λ, μ at every point while the tangents are isotropic; the whole
+    // tensors, in a second pass, once one is not.
     Table<2, VectorizedArrayType> lambda(batches, n_points),
       mu(batches, n_points);
-    bool isotropic = true;
-    for (unsigned int b = 0; b < batches; ++b)
-      for (unsigned int v = 0; v < data.n_active_entries_per_cell_batch(b); ++v)
-        {
-          const CellIterator cell = data.get_cell_iterator(b, v);
-          for (unsigned int q = 0; q < n_points; ++q)
-            {
-              const SymmetricTensor<4, dim> C = tangent(cell, q);
-              lambda(b, q)[v]                 = C[0][0][1][1];
-              mu(b, q)[v]                     = C[0][1][0][1];
-              SymmetricTensor<4, dim> iso;
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = 0; j < dim; ++j)
-                  iso[i][i][j][j] = C[0][0][1][1];
-              iso += 2 * C[0][1][0][1] * identity_tensor<dim>();
-              isotropic = isotropic && (C - iso).norm() <= 1e-12 * C.norm();
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = i; j < dim; ++j)
-                  for (unsigned int k = 0; k < dim; ++k)
-                    for (unsigned int l = k; l < dim; ++l)
-                      tangents(b, q)[i][j][k][l][v] = C[i][j][k][l];
-            }
-        }
+    const auto moduli_suffice = [&]() {
+      for (unsigned int b = 0; b < batches; ++b)
+        for (unsigned int v = 0; v < data.n_active_entries_per_cell_batch(b);
+             ++v)
+          {
+            const CellIterator cell = data.get_cell_iterator(b, v);
+            for (unsigned int q = 0; q < n_points; ++q)
+              {
+                const SymmetricTensor<4, dim> C = tangent(cell, q);
+                lambda(b, q)[v]                 = C[0][0][1][1];
+                mu(b, q)[v]                     = C[0][1][0][1];
+                SymmetricTensor<4, dim> iso;
+                for (unsigned int i = 0; i < dim; ++i)
+                  for (unsigned int j = 0; j < dim; ++j)
+                    iso[i][i][j][j] = C[0][0][1][1];
+                iso += 2 * C[0][1][0][1] * identity_tensor<dim>();
+                if ((C - iso).norm() > 1e-12 * C.norm())
+                  return false;
+              }
+          }
+      return true;
+    };
     lambda_cell.clear();
     mu_cell.clear();
-    if (isotropic)
+    if (moduli_suffice())
       {
         lambda_point.swap(lambda);
         mu_point.swap(mu);
@@ -141,6 +140,24 @@ namespace lithostress
         tangents_at_points = false;
         return;
       }
+    lambda.reinit(0, 0);
+    mu.reinit(0, 0);
+    Table<2, SymmetricTensor<4, dim, VectorizedArrayType>> tangents(batches,
+                                                                    n_points);
+    for (unsigned int b = 0; b < batches; ++b)
+      for (unsigned int v = 0; v < data.n_active_entries_per_cell_batch(b); ++v)
+        {
+          const CellIterator cell = data.get_cell_iterator(b, v);
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              const SymmetricTensor<4, dim> C = tangent(cell, q);
+              for (unsigned int i = 0; i < dim; ++i)
+                for (unsigned int j = i; j < dim; ++j)
+                  for (unsigned int k = 0; k < dim; ++k)
+                    for (unsigned int l = k; l < dim; ++l)
+                      tangents(b, q)[i][j][k][l][v] = C[i][j][k][l];
+            }
+        }
     tangent_point.swap(tangents);
     tangents_at_points = true;
     lambda_point.reinit(0, 0);
@@ -524,7 +541,8 @@ namespace lithostress
   {
     return Base::memory_consumption() + this->data->memory_consumption() +
            lambda_cell.memory_consumption() + mu_cell.memory_consumption() +
-           lambda_point.memory_consumption() + mu_point.memory_consumption();
+           lambda_point.memory_consumption() + mu_point.memory_consumption() +
+           tangent_point.memory_consumption();
   }
 
 } // namespace lithostress

@@ -270,8 +270,8 @@ namespace lithostress
              const std::vector<Point<dim>> &,
              const std::vector<SymmetricTensor<2, dim>> &)> &visit) const;
 
-    /** Put material @p id's history values @p values into @p record
-     * (sized to the layout's records if it is not). */
+    /** Put material @p id's history values @p values into @p record (a
+     * record of the layout, from CellHistory::get()). */
     void
     store(const types::material_id   id,
           const std::vector<double> &values,
