@@ -1,6 +1,7 @@
 // Unit test of the plug-in registry (base/plugin_registry.h) through the
-// whole program: a rock law, a fault law and a postprocessor defined and
-// registered in this file only, each by its one registration line, are
+// whole program: a geometry, rock laws, a fault law and a postprocessor
+// defined and registered in this file only, each by its one registration
+// line, are
 // chosen and called by .prm runs through the program's own path
 // (ParameterFile::read, the Simulator's constructor, run()), exactly as
 // app/main.cc runs a model.
@@ -9,7 +10,10 @@
 // elasticity with its stiffness multiplied by an entry of its own,
 // `Stiffness factor` (declared by the law in every material's subsection).
 // The patch test: a block with the displacement u = (e1 x, e2 y) prescribed
-// on all four sides. Q2 elements hold it exactly, so the strain is uniform
+// on all four sides, made by the test's geometry `skewed block`, a 10 x 5
+// parallelogram whose top is shifted by its own entry `Skew` (1 km here).
+// Its cells are parallelograms, whose mapping is affine: Q2 elements hold
+// the linear displacement exactly, so the strain is uniform
 // and the stress at every point is f (λ tr ε I + 2 μ ε), σ_zz = f λ tr ε
 // (plane strain), to round-off: checked at the report points against the
 // closed form, relative 1e-9 (the CG tolerance of 1e-12 bounds the error of
@@ -63,9 +67,13 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_tools.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
+
 #include <lithostress/faults/interface_law.h>
+#include <lithostress/geometry/geometry_model.h>
 #include <lithostress/materials/elastic_rheology.h>
 #include <lithostress/postprocessors/postprocessor.h>
 #include <lithostress/simulator/simulator.h>
@@ -302,6 +310,70 @@ namespace
     double k_s = 0, k_n = 0, c = 0;
   };
 
+  /** A 10 × 5 (length units) block of 2 × 1 cells whose top is shifted by
+   * `Skew` in x: a geometry of the test's own (the worked example of
+   * doc/architecture.md, "Adding a geometry"). */
+  template <int dim>
+  class SkewedBlock : public GeometryModel<dim>
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Skewed block");
+      prm.declare_entry("Skew",
+                        "0",
+                        Patterns::Double(),
+                        "Shift of the top in x [length unit].");
+      prm.leave_subsection();
+    }
+
+    void
+    parse_parameters(ParameterHandler &prm, const double length_scale) override
+    {
+      prm.enter_subsection("Skewed block");
+      skew = prm.get_double("Skew") * length_scale;
+      prm.leave_subsection();
+      length = 10 * length_scale;
+      height = 5 * length_scale;
+      if (!(std::abs(skew) < length))
+        throw_input_error("Geometry/Skewed block/Skew",
+                          "must be shorter than the block");
+    }
+
+    /** Boundary ids 0-3 for left, right, base, top (colorized), material
+     * id 0. */
+    void
+    create_coarse_mesh(
+      parallel::distributed::Triangulation<dim> &tria) const override
+    {
+      GridGenerator::subdivided_hyper_rectangle(
+        tria, {2, 1}, Point<dim>(), Point<dim>(length, height), true);
+      const double s = skew / height;
+      GridTools::transform(
+        [s](const Point<dim> &p) { return Point<dim>(p[0] + s * p[1], p[1]); },
+        tria);
+      // Colorizing also numbers the cells: one material, id 0.
+      for (const auto &cell : tria.active_cell_iterators())
+        cell->set_material_id(0);
+    }
+
+    std::map<std::string, types::boundary_id>
+    boundary_parts() const override
+    {
+      return {{"left", 0}, {"right", 1}, {"base", 2}, {"top", 3}};
+    }
+
+    std::string
+    mesh_entry() const override
+    {
+      return "Geometry/Skewed block";
+    }
+
+  private:
+    double skew = 0, length = 0, height = 0;
+  };
+
   /** What the toy postprocessor saw: the cycles it was called for, the
    * largest |u_x| of the solution at the last one, and the faults'
    * committed history there (its names and each point's values). */
@@ -344,6 +416,9 @@ namespace
   };
 } // namespace
 
+LITHOSTRESS_REGISTER_GEOMETRY(SkewedBlock,
+                              "skewed block",
+                              "a test geometry: a parallelogram")
 LITHOSTRESS_REGISTER_RHEOLOGY(ScaledElasticity,
                               "scaled elasticity",
                               "a test law: elasticity times Stiffness factor")
@@ -370,12 +445,10 @@ namespace
     std::ostringstream prm;
     prm << "set Output directory = " << directory << "\n"
         << "subsection Geometry\n"
-           "  set Model = rectangular block\n"
+           "  set Model = skewed block\n"
            "  set Length unit = km\n"
-           "  subsection Rectangular block\n"
-           "    set X extent = 0, 10\n"
-           "    set Y extent = 0, 5\n"
-           "    set Cells = 2, 1\n"
+           "  subsection Skewed block\n"
+           "    set Skew = 1\n"
            "  end\n"
            "end\n"
            "subsection Materials\n"
@@ -714,16 +787,22 @@ main(int argc, char *argv[])
 
   check(RheologyRegistry<2>::has("scaled elasticity") &&
           RheologyRegistry<2>::has("elastic") &&
-          RheologyRegistry<2>::has("maxwell"),
-        "the registry holds the built-in rock laws and the test's own");
+          RheologyRegistry<2>::has("maxwell") &&
+          GeometryRegistry<2>::has("skewed block") &&
+          GeometryRegistry<2>::has("rectangular block"),
+        "the registries hold the built-in rock laws and geometries and the "
+        "test's own");
   {
     ParameterHandler prm;
     declare(prm, nullptr);
     std::ostringstream text;
     prm.print_parameters(text, ParameterHandler::PRM);
     check(text.str().find("scaled elasticity") != std::string::npos &&
-            text.str().find("Stiffness factor") != std::string::npos,
-          "--print-parameters shows the test law and its own entry");
+            text.str().find("Stiffness factor") != std::string::npos &&
+            text.str().find("skewed block") != std::string::npos &&
+            text.str().find("subsection Skewed block") != std::string::npos,
+          "--print-parameters shows the test law and geometry and their own "
+          "entries");
   }
 
   const std::string directory = "output_plugin_registration";
@@ -744,10 +823,12 @@ main(int argc, char *argv[])
   check(probe.cycles == std::vector<unsigned int>{0, 1},
         "the registered postprocessor is called once per cycle (" +
           std::to_string(probe.cycles.size()) + " calls)");
-  // The largest |u| of the field is at a corner: |e1| · 10 km = 2 m.
-  check(std::abs(probe.largest_u_x - std::abs(e1) * 1e4) < 1e-9,
-        "it is given the patch test's solution (largest |u| " +
-          std::to_string(probe.largest_u_x) + " m against 2 m)");
+  // The largest |u| of the field is at the top right corner: |e1| · 11 km
+  // = 2.2 m.
+  check(std::abs(probe.largest_u_x - std::abs(e1) * 1.1e4) < 1e-9,
+        "it is given the patch test's solution on the skewed block (largest "
+        "|u| " +
+          std::to_string(probe.largest_u_x) + " m against 2.2 m)");
 
   if (root)
     {
