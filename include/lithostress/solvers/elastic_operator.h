@@ -169,6 +169,12 @@ namespace lithostress
     void
     do_general_cell_integral(Evaluator &phi) const;
 
+    /** Call @p visit(batch, lane, cell, q) at every quadrature point of
+     * every cell while it returns true; whether it always did. */
+    template <typename Visitor>
+    bool
+    visit_points(const Visitor &visit) const;
+
     /** The spring traction of the displacement at every point of @p phi. */
     template <typename FaceEvaluator>
     void

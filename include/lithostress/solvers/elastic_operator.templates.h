@@ -65,26 +65,45 @@ namespace lithostress
             int fe_degree,
             typename number,
             typename VectorizedArrayType>
-  void
-  ElasticOperator<dim, fe_degree, number, VectorizedArrayType>::
-    set_point_moduli(const PointModuli &moduli)
+  template <typename Visitor>
+  bool
+  ElasticOperator<dim, fe_degree, number, VectorizedArrayType>::visit_points(
+    const Visitor &visit) const
   {
     const MatrixFreeType &data     = *this->data;
-    const unsigned int    batches  = data.n_cell_batches();
     const unsigned int    n_points = Utilities::pow(fe_degree + 1, dim);
-    lambda_point.reinit(batches, n_points);
-    mu_point.reinit(batches, n_points);
-    for (unsigned int b = 0; b < batches; ++b)
+    for (unsigned int b = 0; b < data.n_cell_batches(); ++b)
       for (unsigned int v = 0; v < data.n_active_entries_per_cell_batch(b); ++v)
         {
           const CellIterator cell = data.get_cell_iterator(b, v);
           for (unsigned int q = 0; q < n_points; ++q)
-            {
-              const LameParameters p = moduli(cell, q);
-              lambda_point(b, q)[v]  = p.lambda;
-              mu_point(b, q)[v]      = p.mu;
-            }
+            if (!visit(b, v, cell, q))
+              return false;
         }
+    return true;
+  }
+
+  template <int dim,
+            int fe_degree,
+            typename number,
+            typename VectorizedArrayType>
+  void
+  ElasticOperator<dim, fe_degree, number, VectorizedArrayType>::
+    set_point_moduli(const PointModuli &moduli)
+  {
+    const unsigned int batches  = this->data->n_cell_batches();
+    const unsigned int n_points = Utilities::pow(fe_degree + 1, dim);
+    lambda_point.reinit(batches, n_points);
+    mu_point.reinit(batches, n_points);
+    visit_points([&](const unsigned int  b,
+                     const unsigned int  v,
+                     const CellIterator &cell,
+                     const unsigned int  q) {
+      const LameParameters p = moduli(cell, q);
+      lambda_point(b, q)[v]  = p.lambda;
+      mu_point(b, q)[v]      = p.mu;
+      return true;
+    });
     lambda_cell.clear();
     mu_cell.clear();
     moduli_at_points = true;
@@ -100,38 +119,29 @@ namespace lithostress
   ElasticOperator<dim, fe_degree, number, VectorizedArrayType>::
     set_point_tangents(const PointTangent &tangent)
   {
-    const MatrixFreeType &data     = *this->data;
-    const unsigned int    batches  = data.n_cell_batches();
-    const unsigned int    n_points = Utilities::pow(fe_degree + 1, dim);
+    const unsigned int batches  = this->data->n_cell_batches();
+    const unsigned int n_points = Utilities::pow(fe_degree + 1, dim);
     // λ, μ at every point while the tangents are isotropic; the whole
     // tensors, in a second pass, once one is not.
     Table<2, VectorizedArrayType> lambda(batches, n_points),
       mu(batches, n_points);
-    const auto moduli_suffice = [&]() {
-      for (unsigned int b = 0; b < batches; ++b)
-        for (unsigned int v = 0; v < data.n_active_entries_per_cell_batch(b);
-             ++v)
-          {
-            const CellIterator cell = data.get_cell_iterator(b, v);
-            for (unsigned int q = 0; q < n_points; ++q)
-              {
-                const SymmetricTensor<4, dim> C = tangent(cell, q);
-                lambda(b, q)[v]                 = C[0][0][1][1];
-                mu(b, q)[v]                     = C[0][1][0][1];
-                SymmetricTensor<4, dim> iso;
-                for (unsigned int i = 0; i < dim; ++i)
-                  for (unsigned int j = 0; j < dim; ++j)
-                    iso[i][i][j][j] = C[0][0][1][1];
-                iso += 2 * C[0][1][0][1] * identity_tensor<dim>();
-                if ((C - iso).norm() > 1e-12 * C.norm())
-                  return false;
-              }
-          }
-      return true;
-    };
+    const bool isotropic = visit_points([&](const unsigned int  b,
+                                            const unsigned int  v,
+                                            const CellIterator &cell,
+                                            const unsigned int  q) {
+      const SymmetricTensor<4, dim> C = tangent(cell, q);
+      lambda(b, q)[v]                 = C[0][0][1][1];
+      mu(b, q)[v]                     = C[0][1][0][1];
+      SymmetricTensor<4, dim> iso;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          iso[i][i][j][j] = C[0][0][1][1];
+      iso += 2 * C[0][1][0][1] * identity_tensor<dim>();
+      return (C - iso).norm() <= 1e-12 * C.norm();
+    });
     lambda_cell.clear();
     mu_cell.clear();
-    if (moduli_suffice())
+    if (isotropic)
       {
         lambda_point.swap(lambda);
         mu_point.swap(mu);
@@ -144,20 +154,18 @@ namespace lithostress
     mu.reinit(0, 0);
     Table<2, SymmetricTensor<4, dim, VectorizedArrayType>> tangents(batches,
                                                                     n_points);
-    for (unsigned int b = 0; b < batches; ++b)
-      for (unsigned int v = 0; v < data.n_active_entries_per_cell_batch(b); ++v)
-        {
-          const CellIterator cell = data.get_cell_iterator(b, v);
-          for (unsigned int q = 0; q < n_points; ++q)
-            {
-              const SymmetricTensor<4, dim> C = tangent(cell, q);
-              for (unsigned int i = 0; i < dim; ++i)
-                for (unsigned int j = i; j < dim; ++j)
-                  for (unsigned int k = 0; k < dim; ++k)
-                    for (unsigned int l = k; l < dim; ++l)
-                      tangents(b, q)[i][j][k][l][v] = C[i][j][k][l];
-            }
-        }
+    visit_points([&](const unsigned int  b,
+                     const unsigned int  v,
+                     const CellIterator &cell,
+                     const unsigned int  q) {
+      const SymmetricTensor<4, dim> C = tangent(cell, q);
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = i; j < dim; ++j)
+          for (unsigned int k = 0; k < dim; ++k)
+            for (unsigned int l = k; l < dim; ++l)
+              tangents(b, q)[i][j][k][l][v] = C[i][j][k][l];
+      return true;
+    });
     tangent_point.swap(tangents);
     tangents_at_points = true;
     lambda_point.reinit(0, 0);
