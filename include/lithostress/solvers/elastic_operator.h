@@ -169,6 +169,21 @@ namespace lithostress
     void
     do_general_cell_integral(Evaluator &phi) const;
 
+    /** Whether the moduli are stored per quadrature point (else per cell
+     * or as whole tangents). */
+    bool
+    moduli_at_points() const
+    {
+      return lambda_point.n_rows() > 0;
+    }
+
+    /** Whether whole tangents are stored per quadrature point. */
+    bool
+    tangents_at_points() const
+    {
+      return tangent_point.n_rows() > 0;
+    }
+
     /** Call @p visit(batch, lane, cell, q) at every quadrature point of
      * every cell while it returns true; whether it always did. */
     template <typename Visitor>
@@ -186,10 +201,8 @@ namespace lithostress
 
     AlignedVector<VectorizedArrayType> lambda_cell, mu_cell;
     Table<2, VectorizedArrayType>      lambda_point, mu_point;
-    bool                               moduli_at_points = false;
     Table<2, SymmetricTensor<4, dim, VectorizedArrayType>> tangent_point;
-    bool                                 tangents_at_points = false;
-    std::map<types::boundary_id, double> springs;
+    std::map<types::boundary_id, double>                   springs;
   };
 } // namespace lithostress
 

@@ -23,9 +23,7 @@ namespace lithostress
     mu_cell.clear();
     lambda_point.reinit(0, 0);
     mu_point.reinit(0, 0);
-    moduli_at_points = false;
     tangent_point.reinit(0, 0);
-    tangents_at_points = false;
     springs.clear();
     Base::clear();
   }
@@ -56,9 +54,7 @@ namespace lithostress
       }
     lambda_point.reinit(0, 0);
     mu_point.reinit(0, 0);
-    moduli_at_points = false;
     tangent_point.reinit(0, 0);
-    tangents_at_points = false;
   }
 
   template <int dim,
@@ -106,9 +102,7 @@ namespace lithostress
     });
     lambda_cell.clear();
     mu_cell.clear();
-    moduli_at_points = true;
     tangent_point.reinit(0, 0);
-    tangents_at_points = false;
   }
 
   template <int dim,
@@ -145,9 +139,7 @@ namespace lithostress
       {
         lambda_point.swap(lambda);
         mu_point.swap(mu);
-        moduli_at_points = true;
         tangent_point.reinit(0, 0);
-        tangents_at_points = false;
         return;
       }
     lambda.reinit(0, 0);
@@ -167,10 +159,8 @@ namespace lithostress
       return true;
     });
     tangent_point.swap(tangents);
-    tangents_at_points = true;
     lambda_point.reinit(0, 0);
     mu_point.reinit(0, 0);
-    moduli_at_points = false;
   }
 
   template <int dim,
@@ -209,7 +199,7 @@ namespace lithostress
   ElasticOperator<dim, fe_degree, number, VectorizedArrayType>::
     do_cell_integral(Evaluator &phi) const
   {
-    if (moduli_at_points || tangents_at_points ||
+    if (moduli_at_points() || tangents_at_points() ||
         phi.get_cell_type() != internal::MatrixFreeFunctions::cartesian)
       {
         do_general_cell_integral(phi);
@@ -284,7 +274,7 @@ namespace lithostress
     do_general_cell_integral(Evaluator &phi) const
   {
     const unsigned int cell = phi.get_current_cell_index();
-    if (tangents_at_points)
+    if (tangents_at_points())
       {
         // σ = C_q : ε, submitted as a full tensor.
         for (const unsigned int q : phi.quadrature_point_indices())
@@ -300,14 +290,14 @@ namespace lithostress
         return;
       }
     VectorizedArrayType lambda = 0, mu = 0;
-    if (!moduli_at_points)
+    if (!moduli_at_points())
       {
         lambda = lambda_cell[cell];
         mu     = mu_cell[cell];
       }
     for (const unsigned int q : phi.quadrature_point_indices())
       {
-        if (moduli_at_points)
+        if (moduli_at_points())
           {
             lambda = lambda_point(cell, q);
             mu     = mu_point(cell, q);
@@ -459,7 +449,7 @@ namespace lithostress
               scalar.evaluate(EvaluationFlags::gradients);
               std::array<VectorizedArrayType, dim> entry{};
               for (const unsigned int q : scalar.quadrature_point_indices())
-                if (tangents_at_points)
+                if (tangents_at_points())
                   {
                     // ε(N_a e_c) : C_q : ε(N_a e_c) for any tangent.
                     const Tensor<1, dim, VectorizedArrayType> gradient =
@@ -476,11 +466,11 @@ namespace lithostress
                   }
                 else
                   {
-                    const VectorizedArrayType lambda = moduli_at_points
+                    const VectorizedArrayType lambda = moduli_at_points()
                                                          ? lambda_point(cell, q)
                                                          : lambda_cell[cell];
                     const VectorizedArrayType mu =
-                      moduli_at_points ? mu_point(cell, q) : mu_cell[cell];
+                      moduli_at_points() ? mu_point(cell, q) : mu_cell[cell];
                     const Tensor<1, dim, VectorizedArrayType> gradient =
                       scalar.get_gradient(q);
                     const VectorizedArrayType JxW   = scalar.JxW(q);
