@@ -164,6 +164,16 @@ main(int argc, char *argv[])
         std::cerr << "lithostress: " << stop.what() << std::endl;
       return 128 + stop.signal();
     }
+  catch (const dealii::ExceptionBase &error)
+    {
+      // deal.II's what() carries the file, the condition and a stack
+      // trace: the one line is its message.
+      std::cerr << "lithostress: internal error: "
+                << lithostress::one_line_message(error) << std::endl;
+      if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        MPI_Abort(MPI_COMM_WORLD, 2);
+      return 2;
+    }
   catch (const std::exception &error)
     {
       // Not known to be collective: the other ranks may be waiting in a

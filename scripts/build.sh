@@ -1,7 +1,8 @@
 #!/bin/bash
 # Configure (once) and build lithostress: scripts/build.sh <dir> <Debug|Release>
 # (LITHOSTRESS_SANITIZE=ON in the environment: with ASan + UBSan;
-# LITHOSTRESS_SIMD=AVX2 or AVX512: the vectorised matrix-free operator)
+# LITHOSTRESS_SIMD=AUTO (default: AVX2 where the CPU has it), OFF, AVX2 or
+# AVX512: the vectorised matrix-free operator)
 set -euo pipefail
 dir=${1:-build}
 type=${2:-Release}
@@ -14,7 +15,7 @@ esac
 mkdir -p "$path"
 cd "$path"
 sanitize=${LITHOSTRESS_SANITIZE:-OFF}
-simd=${LITHOSTRESS_SIMD:-OFF}
+simd=${LITHOSTRESS_SIMD:-AUTO}
 if [ ! -f CMakeCache.txt ] || ! grep -q "CMAKE_BUILD_TYPE:STRING=$type" CMakeCache.txt ||
    ! grep -q "LITHOSTRESS_SANITIZE:BOOL=$sanitize" CMakeCache.txt ||
    ! grep -q "LITHOSTRESS_SIMD:STRING=$simd" CMakeCache.txt; then

@@ -119,6 +119,50 @@ def slope(rows, column, first=0):
 FAILURES = []
 
 
+def newton_solves(log_text):
+    """The frictional Newton iterations of a run's log, one list per solve
+    (a new solve starts at iteration 1): dicts with iteration, residual
+    (relative to the load), sliding and open. Fails the test if the log
+    has none: a parser that finds nothing must not pass."""
+    import re
+    solves = []
+    for m in re.finditer(r"Newton iteration (\d+): residual (\S+), .*? (\d+) sliding, "
+                         r"(\d+) open", log_text):
+        if m.group(1) == "1" or not solves:
+            solves.append([])
+        solves[-1].append({"iteration": int(m.group(1)), "residual": float(m.group(2)),
+                           "sliding": int(m.group(3)), "open": int(m.group(4))})
+    if not solves:
+        fail("the log has no frictional Newton iteration lines")
+    return solves
+
+
+def settled_steps(solve):
+    """The Newton steps of @solve taken with the states standing still:
+    those whose sliding and open counts equal the step before's (a change
+    that keeps the counts is missed, which only lengthens what is
+    counted)."""
+    return [i for i in range(1, len(solve))
+            if (solve[i]["sliding"], solve[i]["open"]) ==
+            (solve[i - 1]["sliding"], solve[i - 1]["open"])]
+
+
+def check_settled_newton(label, solve, reduction=1e-2, floor=1e-11):
+    """Once the fault states stand still the frictional problem is linear:
+    a Newton step solves it to its linear solve's accuracy (Linear solver
+    reduction 1e-3 or tighter), so each settled step reduces the residual
+    by at least @reduction, down to the round-off @floor of the residual
+    relative to the load (10x margin on the linear solve's 1e-3)."""
+    steps = settled_steps(solve)
+    ratios = [solve[i]["residual"] / solve[i - 1]["residual"] for i in steps
+              if solve[i - 1]["residual"] > floor]
+    check(bool(steps) and all(r <= reduction for r in ratios),
+          "%s: %d Newton steps, %d with the states standing still, residual ratios there %s "
+          "(each <= %g above %g: the settled problem is linear)"
+          % (label, len(solve), len(steps), ", ".join("%.1e" % r for r in ratios),
+             reduction, floor))
+
+
 def check(condition, message):
     status = "ok  " if condition else "FAIL"
     print("%s %s" % (status, message))

@@ -5,6 +5,9 @@
 #include <lithostress/base/parameter_file.h>
 #include <lithostress/base/renamed_entries.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -91,6 +94,69 @@ namespace lithostress
 
   namespace
   {
+    /** An entry or section name as ParameterHandler stores it (every
+     * character but letters and digits as _ and two hex digits) in words. */
+    std::string
+    demangle(const std::string &name)
+    {
+      std::string out;
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (name[i] == '_' && i + 2 < name.size() &&
+            std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
+          {
+            out +=
+              static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+          }
+        else
+          out += name[i];
+      return out;
+    }
+
+    /** Check the numbers of the entries below @p tree, whose path is
+     * @p path (ParameterFile::check_numbers). */
+    void
+    check_numbers_below(const boost::property_tree::ptree &tree,
+                        const std::string                 &path)
+    {
+      for (const auto &[key, child] : tree)
+        {
+          const std::string name = path + demangle(key);
+          const auto        pattern =
+            child.get_optional<std::string>("pattern_description");
+          const auto value = child.get_optional<std::string>("value");
+          if (!pattern || !value)
+            {
+              check_numbers_below(child, name + "/");
+              continue;
+            }
+          const bool is_double  = pattern->rfind("[Double", 0) == 0;
+          const bool is_integer = pattern->rfind("[Integer", 0) == 0;
+          if (!is_double && !is_integer)
+            continue;
+          bool fits = true;
+          try
+            {
+              if (is_double)
+                fits = std::isfinite(Utilities::string_to_double(*value));
+              else
+                Utilities::string_to_int(*value);
+            }
+          catch (...)
+            {
+              fits = false;
+            }
+          if (!fits)
+            throw_input_error(name,
+                              "<" + *value + "> does not fit " +
+                                (is_double
+                                   ? std::string("a double (magnitudes from "
+                                                 "2.3e-308 to 1.8e308, or 0)")
+                                   : std::string("an int")));
+        }
+    }
+
     /** The InputError for the parser's error @p exc in the file @p filename
      * with text @p contents: where the file sets an entry that was renamed
      * or moved, the line that says where it went (the parser only knows
@@ -204,6 +270,17 @@ namespace lithostress
       }
     for (const std::string &o : overrides)
       apply_override(prm, o);
+    check_numbers(prm);
+  }
+
+  void
+  ParameterFile::check_numbers(const ParameterHandler &prm)
+  {
+    std::stringstream json;
+    prm.print_parameters(json, ParameterHandler::JSON);
+    boost::property_tree::ptree tree;
+    boost::property_tree::read_json(json, tree);
+    check_numbers_below(tree, "");
   }
 
   template std::vector<Point<2>>

@@ -17,6 +17,26 @@ namespace lithostress
      * the assembly rule of the highest polynomial degree (4). */
     constexpr unsigned int points_per_direction = 5;
 
+    /**
+     * The points of the closed unit cell at which a Jacobian is checked:
+     * the Gauss points of the assembly (an inverted cell) and the Gauss–
+     * Lobatto points, which include the corners and points on every edge
+     * (a cell with two coincident corners, a triangle, has a positive
+     * Jacobian at every Gauss point and zero at those corners).
+     */
+    template <int dim>
+    Quadrature<dim>
+    closed_cell_points()
+    {
+      const QGauss<dim>        gauss(points_per_direction);
+      const QGaussLobatto<dim> lobatto(points_per_direction);
+      std::vector<Point<dim>>  points = gauss.get_points();
+      points.insert(points.end(),
+                    lobatto.get_points().begin(),
+                    lobatto.get_points().end());
+      return Quadrature<dim>(points);
+    }
+
     /** A determinant of at most this times the square of the cell's
      * diameter is a flat cell's (round-off of zero). */
     constexpr double flat = 1e-12;
@@ -31,8 +51,8 @@ namespace lithostress
     {
       std::ostringstream out;
       out << name
-          << " is inverted or degenerate (Jacobian <= 0 at a quadrature "
-             "point); vertices ";
+          << " is inverted or degenerate (Jacobian <= 0 at a point of the "
+             "closed cell); vertices ";
       for (unsigned int v = 0; v < corners.size(); ++v)
         out << (v > 0 ? ", " : "") << "(" << corners[v][0] / length_scale
             << ", " << corners[v][1] / length_scale << ")";
@@ -160,8 +180,8 @@ namespace lithostress
     const std::function<std::string(const unsigned int)> &cell_name)
   {
     static_assert(dim == 2, "the mesh check is written for quadrilaterals");
-    const QGauss<dim> quadrature(points_per_direction);
-    const FE_Q<dim>   fe(1);
+    const Quadrature<dim> quadrature = closed_cell_points<dim>();
+    const FE_Q<dim>       fe(1);
     // Only the Jacobians: with JxW the mapping would itself assert (in
     // debug mode) on the cells this is to find.
     FEValues<dim> values(mapping, fe, quadrature, update_jacobians);
@@ -211,7 +231,7 @@ namespace lithostress
     const std::string                                    &length_unit,
     const std::function<std::string(const unsigned int)> &cell_name)
   {
-    const QGauss<2>           points(points_per_direction);
+    const Quadrature<2>       points = closed_cell_points<2>();
     std::vector<int>          direction(cells.size(), 1);
     std::vector<unsigned int> piece(cells.size(), 0);
     if (!node_numbers.empty() &&

@@ -55,7 +55,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from lithotest import check, finish, read_csv, run  # noqa: E402
+from lithotest import check, check_settled_newton, finish, newton_solves, read_csv, run  # noqa: E402
 
 PRM = "faults/locked_fault.prm"
 E, NU, RHO, G, STRAIN = 0.85e11, 0.25, 2750.0, 9.81, 1e-4
@@ -204,7 +204,6 @@ for ranks in (1, 2):
     result = run("faults/frictional_fault.prm", out, ranks)
     slip = D_RIGHT - TAU_F * L / G0
     rows, fault, worst = block_check(out, TAU_F, slip)
-    iterations = [int(m) for m in re.findall(r"Newton iteration (\d+):", result.stdout)]
     summary = read_summary(out)
     check(len(rows) == 6 and len(fault) == 24 and all(f["state"] == "sliding" for f in fault)
           and worst < 1e-9,
@@ -212,9 +211,15 @@ for ranks in (1, 2):
           "mu|sigma_n| = %.6e Pa (exact %.6e), slip %.9f m (d - tau_F L/G = %.9f m), "
           "largest relative difference %.1e"
           % (ranks, len(fault), -fault[0]["shear_traction"], TAU_F, -fault[0]["slip"], slip, worst))
-    check(summary["nonlinear_iterations"] <= 4 and summary["linear_solves"] == summary["nonlinear_iterations"],
-          "frictional fault sliding, %d rank(s): semi-smooth Newton converges in %d iterations "
-          "(elastic predictor, then the active set; at most 4)" % (ranks, summary["nonlinear_iterations"]))
+    # The elastic predictor, then the active set: measured 4 iterations.
+    # Asserted: one linear solve per iteration, each step with the states
+    # standing still reduces the residual by the linear solve's accuracy
+    # (the settled problem is linear), and at most twice the measured count.
+    check(summary["nonlinear_iterations"] <= 8 and summary["linear_solves"] == summary["nonlinear_iterations"],
+          "frictional fault sliding, %d rank(s): semi-smooth Newton converges in %d iterations, "
+          "one linear solve each (at most 8, twice the 4 measured)"
+          % (ranks, summary["nonlinear_iterations"]))
+    check_settled_newton("frictional fault sliding, %d rank(s)" % ranks, newton_solves(result.stdout)[-1])
 
 stuck = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "frictional_fault.prm")).read()
 stuck = stuck.replace("set Prescribed displacement parts = left, right",

@@ -105,8 +105,10 @@ expected = {
     # Broken mesh files and command lines.
     "gmsh_truncated": "gmsh_truncated.msh> is truncated: its $Elements section has no $EndElements",
     "gmsh_missing_node": "gmsh_missing_node.msh>: While creating cell 11 (which is numbered as 12 in the input file), you are referencing a vertex with index 19",
-    "gmsh_inverted_cell": "gmsh_inverted_cell.msh>: element 10 is inverted or degenerate (Jacobian <= 0 at a quadrature point); vertices (6, -10), (4, -10), (4, 0), (6, 0) km",
-    "gmsh_degenerate_cell": "gmsh_degenerate_cell.msh>: element 10 is inverted or degenerate (Jacobian <= 0 at a quadrature point); vertices (4, -10), (4, -10), (4, 0), (4, 0) km",
+    "gmsh_inverted_cell": "gmsh_inverted_cell.msh>: element 10 is inverted or degenerate (Jacobian <= 0 at a point of the closed cell); vertices (6, -10), (4, -10), (4, 0), (6, 0) km",
+    "gmsh_coincident_corners": "gmsh_coincident_corners.msh>: element 8 is inverted or degenerate (Jacobian <= 0 at a point of the closed cell); vertices (5, -10), (10, -10), (5, 0), (5, 0) km",
+    "number_underflows": "Materials/rock/Young's modulus>: <1e-308> does not fit a double",
+    "gmsh_degenerate_cell": "gmsh_degenerate_cell.msh>: element 10 is inverted or degenerate (Jacobian <= 0 at a point of the closed cell); vertices (4, -10), (4, -10), (4, 0), (4, 0) km",
     "override_without_value": "Mesh refinement/Number of cycles",
     "override_empty_value": "Number of cycles",
 }

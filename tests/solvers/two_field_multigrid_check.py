@@ -8,15 +8,18 @@ matrix of a faulted model whose faults are constraints.
    stops at 1e-10 of the load; measured 1.7e-12: 1e-8 leaves the
    condition number's amplification a factor 100 and fails if CG stopped
    early), and the iterations do not grow with the mesh: at most
-   12 on each, and the finest within 2 of the coarsest (measured 8, 8, 8;
+   16 on each (twice the measured), and the finest within 2 of the coarsest (measured 8, 8, 8;
    8 also at 416 k and 1.65 M DoFs in Release). On 2 ranks the same to
    1e-8.
 2. The same locked thrust refined adaptively towards its fault (Kelly,
    a tenth of the cells per cycle, 2 020 to about 7 400 DoFs in six
    cycles, hanging nodes along the fault): each coarser level is the
    next finer one coarsened globally once, and CG still converges in at
-   most 12 iterations on every cycle, the last within 2 of the first
-   (measured 8, 12, 8, 8, 8, 8). (The multigrid's and a direct solver's
+   most 16 iterations on every cycle, twice the uniform meshes' 8, the
+   last within 2 of the first (measured 8, 12, 8, 8, 8, 8: the 12 is the
+   first adaptive mesh, where Kelly's indicators tie: a bound at the
+   measured maximum would fail on a count that moves by where an inexact
+   solve stops). (The multigrid's and a direct solver's
    meshes part after the first cycle, where Kelly's indicators tie, so
    the solutions are compared on the global cycles above.)
 3. tests/faults/viscoelastic_fault.prm with its fault locked: the
@@ -67,8 +70,8 @@ def main():
     check(d < 1e-8, "locked thrust, finest mesh: surface differs from the direct solve by "
           "%.2e of the largest displacement (< 1e-8)" % d)
     its = cycle_iterations(mg)
-    check(len(its) == 3 and max(its) <= 12 and its[-1] <= its[0] + 2,
-          "CG iterations per cycle %s (at most 12, the finest within 2 of the coarsest)" % its)
+    check(len(its) == 3 and max(its) <= 16 and its[-1] <= its[0] + 2,
+          "CG iterations per cycle %s (at most 16, the finest within 2 of the coarsest)" % its)
     run(THRUST, "thrust_mg_2", ranks=2, sets=QUIET + LOCKED + CYCLES + MG)
     d = difference(surface("thrust_mg_2"), surface("thrust_mg"))
     check(d < 1e-8, "2 ranks against 1: %.2e (< 1e-8)" % d)
@@ -77,8 +80,8 @@ def main():
                 "Mesh refinement/Strategy=adaptive", "Mesh refinement/Marking=fraction of cells",
                 "Mesh refinement/Refine fraction=0.1"]
     its = cycle_iterations(run(THRUST, "thrust_mg_adaptive", sets=QUIET + LOCKED + adaptive + MG).stdout)
-    check(len(its) == 6 and max(its) <= 12 and its[-1] <= its[0] + 2,
-          "adaptive cycles: CG iterations %s (at most 12, the last within 2 of the first)" % its)
+    check(len(its) == 6 and max(its) <= 16 and its[-1] <= its[0] + 2,
+          "adaptive cycles: CG iterations %s (at most 16, the last within 2 of the first)" % its)
 
     prm = os.path.join("faults", "viscoelastic_fault.prm")
     run(prm, "visco_mg", sets=LOCKED + MG)

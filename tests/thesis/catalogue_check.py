@@ -42,9 +42,13 @@ experiments = {k[0] for k in known}
 with open(os.path.join(ROOT, "scripts", "reproduce_thesis.py")) as f:
     script = f.read()
 # Literal (experiment, quantity) pairs in the script whose experiment is in
-# the catalogue, and the keys its format strings make.
-pairs = {p for p in re.findall(r'\("([a-z0-9_]+)",\s*"([a-z0-9_]+)"\)', script)
-         if p[0] in experiments}
+# the catalogue (keys have capitals: plane_normal_fault_50MPa,
+# vertical_stress_applied_over_A_A), and the keys its format strings make.
+literal = set(re.findall(r'\(\s*"([A-Za-z0-9_]+)",\s*"([A-Za-z0-9_]+)"\s*\)', script))
+pairs = {p for p in literal if p[0] in experiments}
+check(len(pairs) >= len(experiments),
+      "reproduce_thesis.py: %d literal keys of the catalogue's %d experiments found (at least one "
+      "per experiment: a parser that finds nothing must fail)" % (len(pairs), len(experiments)))
 pairs |= {("cantilever_%s_27node" % e, "max_neutral_fibre_deflection_fraction_of_analytic")
           for e in ("cst", "csq")}
 missing = sorted(pairs - known)

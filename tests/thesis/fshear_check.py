@@ -23,8 +23,12 @@ convergence factor 15 (§6.1.5), and the thesis's 1e5 Pa of excess shear.
    the thesis's 1 023 iterations on each mesh (fault elements 19.7 and
    16.9 km long: the count is proportional to it), factor 15 converges on
    200 cells in no more than the thesis's 76 iterations and does not
-   converge on 800 cells, where factor 12 still does
-   (doc/thesis_comparison.md, "Iteration counts"). Factor 1's counts are
+   converge on 800 cells, where factor 10 still does
+   (doc/thesis_comparison.md, "Iteration counts": on 800 cells factor 10
+   takes 102, 12 takes 302, 13 does not converge, so the limit is near
+   12.5; on 200 cells factor 35 converges, 38 does not. Factor 10 is
+   asserted, not 12, which sits at the limit and whose count grows
+   without bound as the limit moves). Factor 1's counts are
    held to 2 % of 1 023 (measured 1 023 and 1 024): the calibration the
    other two rest on.
 5. The frame and signs of the reading (shear s.sigma.n, normal n.sigma.n,
@@ -122,10 +126,10 @@ check(all(abs(n - 1023) <= 0.02 * 1023 for n in calibration),
       % tuple(calibration))
 _, on_200, _ = limit_run(200, 15)
 check(on_200 <= 76, "200 cells: factor 15 converges in %d iterations (thesis 76: no more)" % on_200)
-_, below, _ = limit_run(800, 12)
+_, below, _ = limit_run(800, 10)
 code, _, message = limit_run(800, 15, expect_success=False)
 check(below is not None and code != 0 and "Convergence factor" in message,
-      "800 cells: factor 12 converges (%s iterations), factor 15 does not (exit %d, naming the "
+      "800 cells: factor 10 converges (%s iterations), factor 15 does not (exit %d, naming the "
       "entry): the thesis's limit of 15 lies between the two meshes'" % (below, code))
 
 SOURCE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

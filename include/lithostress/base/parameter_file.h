@@ -59,6 +59,16 @@ namespace lithostress
      */
     static void
     apply_override(ParameterHandler &prm, const std::string &assignment);
+
+    /**
+     * Throw InputError naming the first entry of @p prm whose pattern is a
+     * double or an integer but whose value the conversion cannot hold
+     * (`Width = 1e-308` matches Patterns::Double but underflows; deal.II's
+     * get_double() would fail only where the entry is read, after output
+     * has begun). Called by read(), before anything is written.
+     */
+    static void
+    check_numbers(const ParameterHandler &prm);
   };
 
   /**
