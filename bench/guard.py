@@ -11,11 +11,14 @@ committed in bench/guard_baseline.json:
   preconditioner or a worse Newton start by far more;
 * times divided by the machine's own matrix-vector product time
   (matvec_ms of the elastic case's assembled stiffness matrix, measured
-  in the same run, the fastest of three runs): at most 1.5 times the baseline's, where the baseline
-  is at least 250 products long (shorter phases are start-up and timer
-  noise). Those ratios move by
-  10-20 % between runs and machines (doc/performance.md); the slowdowns
-  the guard is for were 2.4x (the chapter-7 set, 95 -> 229 s).
+  in the same run, the fastest of three runs): at most twice the
+  baseline's, where the baseline is at least 250 products long (shorter
+  phases are start-up and timer noise). On one machine the ratios moved
+  by up to 1.6x between runs while a single product's time varied from
+  1.6 to 2.3 ms (hence the fastest of three), and the Debug build's own
+  code and the optimised Trilinos product need not scale alike between
+  machines; the slowdown the guard is for was 2.4x (the chapter-7 set,
+  95 -> 229 s).
 
 Every case's row is printed as a JSON line; a figure that moved is named
 with its case, its value and the baseline's, and the guard exits 1.
@@ -32,7 +35,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BASELINE = os.path.join(ROOT, "bench", "guard_baseline.json")
 QUIET = ["Output/Write ParaView files=false", "Output/Figures/Enabled=false"]
 COUNT_TOLERANCE = (2, 0.25)
-TIME_TOLERANCE = 1.5
+TIME_TOLERANCE = 2.0
 # Times shorter than this many matrix-vector products (about 0.6 s here)
 # are start-up and timer noise: not compared.
 SHORTEST = 250
@@ -57,14 +60,14 @@ CASES = {
                           ["iterations"]),
     "viscoelastic": ("prm/viscoelastic_cylinder.prm", QUIET,
                      ["iterations", "linear_solves", "steps"]),
+    # The two fault cases' linear iterations are not compared: whether the
+    # kept preconditioner is made again is decided on measured wall-clock
+    # costs (SlidingContext), so the counts moved from 46 to 60 (normal
+    # fault) and 45 to 80 (coupling) between runs on one machine.
     "frictional_fault": ("prm/normal_fault.prm",
                          QUIET + ["Faults/fault/Normal stiffness=exact",
                                   "Mesh refinement/Initial global refinement=3"],
-                         ["iterations", "nonlinear_iterations", "linear_solves"]),
-    # Its linear iterations are not compared: whether the kept
-    # preconditioner is made again is decided on measured wall-clock costs
-    # (SlidingContext), so the count moved from 45 to 80 between two runs
-    # on one machine.
+                         ["nonlinear_iterations", "linear_solves"]),
     "subduction_coupling": ("prm/subduction_coupling.prm",
                             QUIET + ["Time stepping/Enabled=false"],
                             ["nonlinear_iterations", "linear_solves"]),
