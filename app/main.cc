@@ -164,21 +164,18 @@ main(int argc, char *argv[])
         std::cerr << "lithostress: " << stop.what() << std::endl;
       return 128 + stop.signal();
     }
-  catch (const dealii::ExceptionBase &error)
-    {
-      // deal.II's what() carries the file, the condition and a stack
-      // trace: the one line is its message.
-      std::cerr << "lithostress: internal error: "
-                << lithostress::one_line_message(error) << std::endl;
-      if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-        MPI_Abort(MPI_COMM_WORLD, 2);
-      return 2;
-    }
   catch (const std::exception &error)
     {
       // Not known to be collective: the other ranks may be waiting in a
-      // communication this rank has left, so end them all.
-      std::cerr << "lithostress: internal error: " << error.what() << std::endl;
+      // communication this rank has left, so end them all. deal.II's
+      // what() carries the file, the condition and a stack trace: the one
+      // line is its message.
+      const auto *dealii_error =
+        dynamic_cast<const dealii::ExceptionBase *>(&error);
+      std::cerr << "lithostress: internal error: "
+                << (dealii_error ? lithostress::one_line_message(*dealii_error)
+                                 : lithostress::one_line(error.what()))
+                << std::endl;
       if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
         MPI_Abort(MPI_COMM_WORLD, 2);
       return 2;
