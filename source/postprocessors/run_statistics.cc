@@ -10,6 +10,20 @@
 
 namespace lithostress
 {
+  namespace
+  {
+    /** The width in bits of the active mesh operator's cell batches: the
+     * vectorised build's (LITHOSTRESS_SIMD, doc/performance.md), else one
+     * double. The performance guard reads it: a matrix-free solve is
+     * compared only with one of the same width. */
+    constexpr unsigned int active_operator_bits =
+#ifdef LITHOSTRESS_SIMD_BITS
+      LITHOSTRESS_SIMD_BITS;
+#else
+      8 * sizeof(double);
+#endif
+  } // namespace
+
   template <int dim>
   void
   RunStatistics<dim>::finish(const SimulatorAccess<dim> &a)
@@ -53,6 +67,7 @@ namespace lithostress
       out << "{\"solver\": \"" << s.solver.solver << "\", \"dofs\": " << s.dofs
           << ", \"cells\": " << s.cells
           << ", \"ranks\": " << Utilities::MPI::n_mpi_processes(a.communicator)
+          << ", \"active_operator_bits\": " << active_operator_bits
           << ", \"huge_pages\": "
           << (huge_pages_for_large_arrays() ? "true" : "false")
           << ", \"iterations\": " << s.solver.iterations
