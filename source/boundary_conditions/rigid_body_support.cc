@@ -33,19 +33,19 @@ namespace lithostress
       return out.str();
     }
 
-    /** The rigid-body modes of the displacement fields: mode k of field f
-     * (k = 3 f + 0, 1, 2) is the translation in x, in y, and the rotation
-     * about the centre of the body scaled by its size, so that all modes
-     * are O(1); it is zero in the other field. The body is the bounding
-     * box of the coarse mesh, whose vertices every rank holds. */
+    /** The rigid-body modes of the bodies: mode k of body b (k = 3 b +
+     * 0, 1, 2) is the translation in x, in y, and the rotation about the
+     * centre of the model scaled by its size, so that all modes are O(1);
+     * it is zero on the other bodies. The model is the bounding box of the
+     * coarse mesh, whose vertices every rank holds. */
     template <int dim>
     struct RigidBodyModes
     {
-      static constexpr unsigned int per_field = 3;
+      static constexpr unsigned int per_body = 3;
 
       RigidBodyModes(const Triangulation<dim> &tria,
-                     const unsigned int        n_fields)
-          : n_modes(per_field * n_fields)
+                     const unsigned int        n_bodies)
+          : n_modes(per_body * n_bodies)
       {
         const BoundingBox<dim> box(tria.get_vertices());
         centre = box.center();
@@ -53,16 +53,16 @@ namespace lithostress
           box.get_boundary_points().second);
       }
 
-      /** Component @p d at @p x of mode @p k, in field @p field. */
+      /** Component @p d at @p x of mode @p k, on body @p body. */
       double
-      value(const unsigned int field,
+      value(const unsigned int body,
             const unsigned int d,
             const Point<dim>  &x,
             const unsigned int k) const
       {
-        if (k / per_field != field)
+        if (k / per_body != body)
           return 0.0;
-        const unsigned int m = k % per_field;
+        const unsigned int m = k % per_body;
         if (m < dim)
           return m == d ? 1.0 : 0.0;
         return (d == 0 ? -(x[1] - centre[1]) : (x[0] - centre[0])) / size;
@@ -81,6 +81,7 @@ namespace lithostress
     modes_at_constrained_dofs(const DoFHandler<dim>           &dof_handler,
                               const FiniteElementSpace<dim>   &fe_space,
                               const AffineConstraints<double> &constraints,
+                              const RigidBodies<dim>          &bodies,
                               const RigidBodyModes<dim>       &modes)
     {
       const IndexSet &owned = dof_handler.locally_owned_dofs();
@@ -114,22 +115,20 @@ namespace lithostress
               }
             if (!needed)
               continue;
-            values.reinit(
-              static_cast<typename Triangulation<dim>::cell_iterator>(cell));
+            const typename Triangulation<dim>::cell_iterator tria_cell = cell;
+            values.reinit(tria_cell);
+            const unsigned int body = bodies.of(tria_cell);
             for (unsigned int i = 0; i < dofs.size(); ++i)
               {
                 const auto m = at_dofs.find(dofs[i]);
                 if (m == at_dofs.end() || m->second.size() != 0)
                   continue;
-                const auto         ci    = fe.system_to_component_index(i);
-                const unsigned int field = ci.first / dim;
-                const unsigned int d     = ci.first % dim;
+                const auto         ci = fe.system_to_component_index(i);
+                const unsigned int d  = ci.first % dim;
                 m->second.reinit(modes.n_modes);
                 for (unsigned int k = 0; k < modes.n_modes; ++k)
-                  m->second[k] = modes.value(field,
-                                             d,
-                                             values.quadrature_point(ci.second),
-                                             k);
+                  m->second[k] =
+                    modes.value(body, d, values.quadrature_point(ci.second), k);
               }
           }
       return at_dofs;
@@ -160,15 +159,19 @@ namespace lithostress
           }
     }
 
-    /** Add to @p G the form ∫ |n_y| r_k,y r_l,y ds / size of each vertical
-     * spring of @p loads on the owned cells' boundary faces (only that a
-     * spring acts matters, not its magnitude). */
+    /** Add to @p G the form min(1, k L / E) ∫ |n_y| r_k,y r_l,y ds / L of
+     * each vertical spring k of @p loads on the owned cells' boundary faces,
+     * L the size of the body and E @p youngs_modulus: how strongly a spring
+     * holds matters only where it is too weak to hold anything. Returns
+     * the largest k L / E of the springs (0 without one). */
     template <int dim>
-    void
+    double
     add_spring_forms(FullMatrix<double>            &G,
                      const DoFHandler<dim>         &dof_handler,
                      const FiniteElementSpace<dim> &fe_space,
                      const LoadCollection<dim>     &loads,
+                     const double                   youngs_modulus,
+                     const RigidBodies<dim>        &bodies,
                      const RigidBodyModes<dim>     &modes)
     {
       std::vector<types::boundary_id> parts;
@@ -179,9 +182,12 @@ namespace lithostress
             parts.push_back(cell->face(f)->boundary_id());
       std::sort(parts.begin(), parts.end());
       parts.erase(std::unique(parts.begin(), parts.end()), parts.end());
-      const auto springs = loads.vertical_springs(parts);
+      const auto springs   = loads.vertical_springs(parts);
+      double     strongest = 0;
+      for (const auto &[part, k] : springs)
+        strongest = std::max(strongest, k * modes.size / youngs_modulus);
       if (springs.empty())
-        return;
+        return strongest;
       const FE_Q<dim>       fe(1);
       const QGauss<dim - 1> quadrature(3);
       FEFaceValues<dim>     face_values(fe_space.mapping(),
@@ -197,43 +203,83 @@ namespace lithostress
                 springs.count(cell->face(f)->boundary_id()) != 0 &&
                 springs.at(cell->face(f)->boundary_id()) > 0)
               {
-                face_values.reinit(
-                  static_cast<typename Triangulation<dim>::cell_iterator>(cell),
-                  f);
-                const unsigned int field =
-                  fe_space.field_of(cell->active_fe_index());
+                const typename Triangulation<dim>::cell_iterator tria_cell =
+                  cell;
+                face_values.reinit(tria_cell, f);
+                const unsigned int body = bodies.of(tria_cell);
                 for (const unsigned int q :
                      face_values.quadrature_point_indices())
                   {
                     const Point<dim> &x = face_values.quadrature_point(q);
-                    const double      w =
+                    const double      relative =
+                      springs.at(cell->face(f)->boundary_id()) * modes.size /
+                      youngs_modulus;
+                    const double w =
+                      std::min(1.0, relative) *
                       std::abs(face_values.normal_vector(q)[dim - 1]) *
                       face_values.JxW(q) / modes.size;
                     for (unsigned int k = 0; k < modes.n_modes; ++k)
                       for (unsigned int l = 0; l < modes.n_modes; ++l)
-                        G(k, l) += w * modes.value(field, dim - 1, x, k) *
-                                   modes.value(field, dim - 1, x, l);
+                        G(k, l) += w * modes.value(body, dim - 1, x, k) *
+                                   modes.value(body, dim - 1, x, l);
                   }
               }
+      return strongest;
     }
 
-    /** Add to @p G the forms of an elastic fault's coupling: w |r_k(field
-     * 1, x) − r_k(field 0, x)| at the @p interface_points x with weights
-     * w, so that a body held through the fault by the other is held. */
+    /** Add to @p G the form (w / L) [r_k]^T A^T A [r_l] / max(1, |A|^2)
+     * of each of @p couplings (weight w, stiffness A), [r] the jump of the
+     * modes from its body 0 to its body 1, L the size of the model. */
     template <int dim>
     void
-    add_fault_forms(
-      FullMatrix<double>                               &G,
-      const std::vector<std::pair<Point<dim>, double>> &interface_points,
-      const RigidBodyModes<dim>                        &modes)
+    add_coupling_forms(FullMatrix<double>                   &G,
+                       const std::vector<BodyCoupling<dim>> &couplings,
+                       const RigidBodyModes<dim>            &modes)
     {
-      for (const auto &[x, weight] : interface_points)
-        for (unsigned int d = 0; d < dim; ++d)
+      std::vector<Tensor<1, dim>> jump(modes.n_modes);
+      for (const BodyCoupling<dim> &c : couplings)
+        {
+          const Tensor<2, dim> AA   = transpose(c.stiffness) * c.stiffness;
+          const double         norm = AA.norm();
+          if (norm == 0)
+            continue;
+          const double w = c.JxW / modes.size / std::max(1.0, norm);
           for (unsigned int k = 0; k < modes.n_modes; ++k)
-            for (unsigned int l = 0; l < modes.n_modes; ++l)
-              G(k, l) += weight / modes.size *
-                         (modes.value(1, d, x, k) - modes.value(0, d, x, k)) *
-                         (modes.value(1, d, x, l) - modes.value(0, d, x, l));
+            for (unsigned int d = 0; d < dim; ++d)
+              jump[k][d] = modes.value(c.body_1, d, c.position, k) -
+                           modes.value(c.body_0, d, c.position, k);
+          for (unsigned int k = 0; k < modes.n_modes; ++k)
+            if (jump[k].norm() > 0)
+              for (unsigned int l = 0; l < modes.n_modes; ++l)
+                G(k, l) += w * (jump[k] * (AA * jump[l]));
+        }
+    }
+
+    /** The centre of each of the @p bodies (of its owned active cells'
+     * areas, summed over the ranks): where a message says a body is. */
+    template <int dim>
+    std::vector<Point<dim>>
+    body_centres(const DoFHandler<dim>  &dof_handler,
+                 const RigidBodies<dim> &bodies)
+    {
+      std::vector<double> sums(bodies.n * (dim + 1), 0.);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const typename Triangulation<dim>::cell_iterator tria_cell = cell;
+            const unsigned int b = bodies.of(tria_cell);
+            const double       a = cell->measure();
+            for (unsigned int d = 0; d < dim; ++d)
+              sums[b * (dim + 1) + d] += a * cell->center()[d];
+            sums[b * (dim + 1) + dim] += a;
+          }
+      Utilities::MPI::sum(sums, dof_handler.get_communicator(), sums);
+      std::vector<Point<dim>> centres(bodies.n);
+      for (unsigned int b = 0; b < bodies.n; ++b)
+        for (unsigned int d = 0; d < dim; ++d)
+          centres[b][d] = sums[b * (dim + 1) + d] /
+                          std::max(sums[b * (dim + 1) + dim], 1e-300);
+      return centres;
     }
 
     /** The direction of the translation @p c (x and y components): "x",
@@ -281,7 +327,7 @@ namespace lithostress
                      const double                       length_scale,
                      const std::string                 &length_unit)
     {
-      if (free.size() == RigidBodyModes<dim>::per_field)
+      if (free.size() == RigidBodyModes<dim>::per_body)
         return body + " is free to move as a rigid body (to translate in x and "
                       "y and to rotate): nothing holds it; prescribe "
                       "displacements on boundary parts or add a spring";
@@ -289,7 +335,7 @@ namespace lithostress
         {
           // A translation in the free plane: the combination without
           // rotation.
-          Vector<double> t(RigidBodyModes<dim>::per_field);
+          Vector<double> t(RigidBodyModes<dim>::per_body);
           t.add(free[1][2], free[0]);
           t.add(-free[0][2], free[1]);
           if (t.l2_norm() < 1e-6)
@@ -338,33 +384,36 @@ namespace lithostress
   } // namespace
 
   template <int dim>
-  void
-  RigidBodySupport<dim>::check(
-    const DoFHandler<dim>                            &dof_handler,
-    const FiniteElementSpace<dim>                    &fe_space,
-    const AffineConstraints<double>                  &constraints,
-    const LoadCollection<dim>                        &loads,
-    const double                                      length_scale,
-    const std::string                                &length_unit,
-    const std::vector<std::pair<Point<dim>, double>> &interface_points)
+  std::string
+  RigidBodySupport<dim>::free_motion(
+    const DoFHandler<dim>                &dof_handler,
+    const FiniteElementSpace<dim>        &fe_space,
+    const AffineConstraints<double>      &constraints,
+    const LoadCollection<dim>            &loads,
+    const double                          youngs_modulus,
+    const RigidBodies<dim>               &bodies,
+    const std::vector<BodyCoupling<dim>> &couplings,
+    const double                          length_scale,
+    const std::string                    &length_unit)
   {
     static_assert(dim == 2, "rigid-body modes are written for 2-D");
-    const RigidBodyModes<dim> modes(dof_handler.get_triangulation(),
-                                    fe_space.n_fields());
-    const unsigned int        per_field = RigidBodyModes<dim>::per_field;
+    const RigidBodyModes<dim> modes(dof_handler.get_triangulation(), bodies.n);
+    const unsigned int        per_body = RigidBodyModes<dim>::per_body;
 
     // G from the constraint lines of owned DoFs, the vertical springs on
-    // boundary parts and elastic faults (the relative motion of the two
-    // fields), summed over the ranks.
+    // boundary parts and the couplings between bodies, summed over the
+    // ranks.
     FullMatrix<double> G(modes.n_modes, modes.n_modes);
-    add_constraint_forms(
-      G,
-      constraints,
-      dof_handler,
-      modes_at_constrained_dofs(dof_handler, fe_space, constraints, modes));
-    add_spring_forms(G, dof_handler, fe_space, loads, modes);
-    if (fe_space.n_fields() == 2)
-      add_fault_forms(G, interface_points, modes);
+    add_constraint_forms(G,
+                         constraints,
+                         dof_handler,
+                         modes_at_constrained_dofs(
+                           dof_handler, fe_space, constraints, bodies, modes));
+    const double springs = Utilities::MPI::max(
+      add_spring_forms(
+        G, dof_handler, fe_space, loads, youngs_modulus, bodies, modes),
+      dof_handler.get_communicator());
+    add_coupling_forms(G, couplings, modes);
     Utilities::MPI::sum(G, dof_handler.get_communicator(), G);
 
     // The free motions: the null space of G.
@@ -375,31 +424,75 @@ namespace lithostress
     lapack.compute_eigenvalues_symmetric(
       -1.0, free_threshold, 1e-15, eigenvalues, null_space);
     if (eigenvalues.size() == 0)
-      return;
+      return "";
 
-    // Describe the free motions of the first body that has any.
-    for (unsigned int field = 0; field < fe_space.n_fields(); ++field)
+    // Describe the free motions of the first body that has any: a basis
+    // of the free motions' parts on that body (two bodies free together
+    // give each the same part).
+    const std::vector<Point<dim>> centres =
+      bodies.n > 1 ? body_centres(dof_handler, bodies)
+                   : std::vector<Point<dim>>();
+    for (unsigned int b = 0; b < bodies.n; ++b)
       {
         std::vector<Vector<double>> free;
         for (unsigned int m = 0; m < eigenvalues.size(); ++m)
           {
-            Vector<double> c(per_field);
-            for (unsigned int k = 0; k < per_field; ++k)
-              c[k] = null_space(field * per_field + k, m);
+            Vector<double> c(per_body);
+            for (unsigned int k = 0; k < per_body; ++k)
+              c[k] = null_space(b * per_body + k, m);
+            for (const Vector<double> &e : free)
+              c.add(-(c * e), e);
             if (c.l2_norm() > 1e-6)
-              free.push_back(c);
+              {
+                c /= c.l2_norm();
+                free.push_back(c);
+              }
           }
         if (free.empty())
           continue;
         const std::string body =
-          fe_space.n_fields() == 1
-            ? std::string("the body")
-            : "body " + std::to_string(field + 1) + " (the " +
-                (field == 0 ? "footwall" : "hanging wall") + ")";
-        throw_input_error(
-          "Boundary conditions/Prescribed displacement parts",
-          free_motion_text(free, body, modes, length_scale, length_unit));
+          bodies.n == 1 ? std::string("the body")
+                        : "the block around " +
+                            point_text(centres[b], length_scale, length_unit);
+        std::string weak;
+        if (springs > 0 && springs < free_threshold)
+          {
+            std::ostringstream out;
+            out << std::setprecision(3)
+                << " (the springs are too weak to hold anything: k L / E = "
+                << springs << " at most, L the size of the body)";
+            weak = out.str();
+          }
+        return free_motion_text(free, body, modes, length_scale, length_unit) +
+               weak;
       }
+    return "";
+  }
+
+  template <int dim>
+  void
+  RigidBodySupport<dim>::check(const DoFHandler<dim>           &dof_handler,
+                               const FiniteElementSpace<dim>   &fe_space,
+                               const AffineConstraints<double> &constraints,
+                               const LoadCollection<dim>       &loads,
+                               const double                     youngs_modulus,
+                               const RigidBodies<dim>          &bodies,
+                               const std::vector<BodyCoupling<dim>> &couplings,
+                               const double       length_scale,
+                               const std::string &length_unit)
+  {
+    const std::string free = free_motion(dof_handler,
+                                         fe_space,
+                                         constraints,
+                                         loads,
+                                         youngs_modulus,
+                                         bodies,
+                                         couplings,
+                                         length_scale,
+                                         length_unit);
+    if (!free.empty())
+      throw_input_error("Boundary conditions/Prescribed displacement parts",
+                        free);
   }
 
   template class RigidBodySupport<2>;

@@ -1,10 +1,14 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/faults/fault_interface.h>
 
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <algorithm>
 #include <map>
 #include <numeric>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 // FaultInterface's topology (thesis chapter 5's fault with a node on each
 // side, here two displacement fields): the faults' faces on the coarse
@@ -91,6 +95,14 @@ namespace lithostress
           throw_input_error("Faults/Names", where.str());
         }
 
+    cut_into_blocks(triangulation);
+  }
+
+  template <int dim>
+  void
+  FaultInterface<dim>::cut_into_blocks(const Triangulation<dim> &triangulation)
+  {
+    const unsigned int n_coarse = triangulation.n_cells(0);
     // Blocks: the coarse cells connected across faces that are no fault's.
     std::vector<unsigned int> block(n_coarse);
     std::iota(block.begin(), block.end(), 0u);
@@ -157,6 +169,35 @@ namespace lithostress
       }
     for (unsigned int c = 0; c < n_coarse; ++c)
       coarse_field[c] = field_of_block[root(c)];
+
+    // The blocks numbered 0, 1, ..., and each fault's two.
+    std::map<unsigned int, unsigned int> number;
+    for (const auto &[b, field] : field_of_block)
+      number.emplace(b, number.size());
+    coarse_block.resize(n_coarse);
+    for (unsigned int c = 0; c < n_coarse; ++c)
+      coarse_block[c] = number.at(root(c));
+    fault_blocks.assign(faults.size(), {0U, 0U});
+    for (const auto &[a, neighbours] : across)
+      for (const auto &[b, k] : neighbours)
+        fault_blocks[k] = {number.at(a), number.at(b)};
+  }
+
+  template <int dim>
+  RigidBodies<dim>
+  FaultInterface<dim>::blocks() const
+  {
+    RigidBodies<dim> bodies;
+    if (faults.empty())
+      return bodies;
+    bodies.n =
+      fault_blocks.empty()
+        ? 1
+        : 1 + *std::max_element(coarse_block.begin(), coarse_block.end());
+    bodies.of = [this](const typename Triangulation<dim>::cell_iterator &cell) {
+      return coarse_block[coarse_index(cell)];
+    };
+    return bodies;
   }
 
   template <int dim>
@@ -255,21 +296,30 @@ namespace lithostress
   }
 
   template <int dim>
-  std::vector<std::pair<Point<dim>, double>>
+  std::vector<BodyCoupling<dim>>
   FaultInterface<dim>::interface_points(
     const DoFHandler<dim>         &dof_handler,
     const FiniteElementSpace<dim> &fe_space) const
   {
-    std::vector<std::pair<Point<dim>, double>> points;
+    std::vector<BodyCoupling<dim>> points;
     if (!has_face_terms())
       return points;
     for (const InterfacePoint &p : interface_quadrature(dof_handler, fe_space))
-      points.emplace_back(p.position, p.JxW);
+      {
+        BodyCoupling<dim> c;
+        c.position                   = p.position;
+        c.JxW                        = p.JxW;
+        std::tie(c.body_0, c.body_1) = fault_blocks[p.fault];
+        c.stiffness                  = unit_symmetric_tensor<dim>();
+        points.push_back(c);
+      }
     return points;
   }
 
   template void
   FaultInterface<2>::identify(const Triangulation<2> &);
+  template void
+  FaultInterface<2>::cut_into_blocks(const Triangulation<2> &);
   template void
   FaultInterface<2>::set_active_fe_indices(DoFHandler<2> &) const;
   template void
@@ -277,7 +327,9 @@ namespace lithostress
                                         const FacePairVisitor &) const;
   template std::vector<std::vector<types::global_dof_index>>
   FaultInterface<2>::interface_cliques(const DoFHandler<2> &) const;
-  template std::vector<std::pair<Point<2>, double>>
+  template std::vector<BodyCoupling<2>>
   FaultInterface<2>::interface_points(const DoFHandler<2> &,
                                       const FiniteElementSpace<2> &) const;
+  template RigidBodies<2>
+  FaultInterface<2>::blocks() const;
 } // namespace lithostress

@@ -1,4 +1,8 @@
+#include <deal.II/base/bounding_box.h>
+
 #include <lithostress/faults/sliding_context.h>
+
+#include <tuple>
 
 namespace lithostress
 {
@@ -522,6 +526,50 @@ namespace lithostress
           << Utilities::MPI::sum(n[2], communicator) << " open of "
           << Utilities::MPI::sum(n_points, communicator) << " points";
       return out.str();
+    }
+
+    template <int dim>
+    void
+    SlidingContext<dim>::check_blocks_held() const
+    {
+      const RigidBodies<dim> blocks = faults.blocks();
+      const double E = problem.stress_model.materials.largest_youngs_modulus();
+      const BoundingBox<dim> box(
+        dof_handler.get_triangulation().get_vertices());
+      const double size = box.get_boundary_points().first.distance(
+        box.get_boundary_points().second);
+      const auto points = faults.interface_quadrature(dof_handler, fe_space);
+      std::vector<BodyCoupling<dim>> couplings(points.size());
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          couplings[i].position = points[i].position;
+          couplings[i].JxW      = points[i].JxW;
+          std::tie(couplings[i].body_0, couplings[i].body_1) =
+            faults.blocks_of_fault(points[i].fault);
+          couplings[i].stiffness = assembled_tangents[i] * (size / E);
+        }
+      const bool        km = size > 1e4;
+      const std::string free =
+        RigidBodySupport<dim>::free_motion(dof_handler,
+                                           fe_space,
+                                           active_constraints(),
+                                           problem.loads,
+                                           E,
+                                           blocks,
+                                           couplings,
+                                           km ? 1e3 : 1.,
+                                           km ? "km" : "m");
+      if (free.empty())
+        return;
+      std::ostringstream what;
+      what << "the states of the fault points leave the linearised system "
+              "singular after Newton iteration "
+           << iteration << " (" << count_states() << " on "
+           << faults.frictional_names() << "): " << free
+           << ". A fault whose points open or slide without friction holds "
+              "nothing: is there a normal stress on it (gravity, Lithostatic "
+              "density, loads that press it shut)?";
+      throw ComputationError(what.str());
     }
 
     template class SlidingContext<2>;

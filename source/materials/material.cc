@@ -3,6 +3,8 @@
 #include <lithostress/materials/material.h>
 #include <lithostress/materials/rheology.h>
 
+#include <algorithm>
+
 namespace lithostress
 {
   double
@@ -195,5 +197,14 @@ namespace lithostress
   MaterialLibrary::materials() const
   {
     return all;
+  }
+
+  double
+  MaterialLibrary::largest_youngs_modulus() const
+  {
+    double E = 0;
+    for (const Material &m : all)
+      E = std::max(E, m.youngs_modulus);
+    return E;
   }
 } // namespace lithostress

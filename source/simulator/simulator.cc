@@ -310,10 +310,12 @@ namespace lithostress
                                  *fe_space,
                                  constraints,
                                  loads,
-                                 length_scale,
-                                 length_unit,
+                                 materials.largest_youngs_modulus(),
+                                 faults.blocks(),
                                  faults.interface_points(dof_handler,
-                                                         *fe_space));
+                                                         *fe_space),
+                                 length_scale,
+                                 length_unit);
 
     // The first mesh, and with global refinement the last one, must fit
     // in memory. DoFs grow with the cells in the interior (dim p^dim per

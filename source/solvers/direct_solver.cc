@@ -4,7 +4,10 @@
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
 #include <lithostress/solvers/direct_solver.h>
+
+#include <Amesos.h>
 
 namespace lithostress
 {
@@ -37,8 +40,10 @@ namespace lithostress
       }
     catch (const std::exception &exc)
       {
+        const auto *dealii_error = dynamic_cast<const ExceptionBase *>(&exc);
         throw ComputationError(std::string("the direct solver failed: ") +
-                               exc.what());
+                               (dealii_error ? one_line_message(*dealii_error)
+                                             : one_line(exc.what())));
       }
   }
 
@@ -156,7 +161,24 @@ namespace lithostress
                             const FiniteElementSpace<dim> &fe_space)
   {
     (void)fe_space;
-    return std::make_unique<DirectSolver<dim>>(prm.get("Direct solver"));
+    const std::string package = prm.get("Direct solver");
+    // The Amesos packages Debian's Trilinos was built with (KLU and MUMPS,
+    // not SuperLU_DIST): an unavailable one is named before anything is
+    // solved, not by Trilinos's exception in the first solve.
+    Amesos factory;
+    if (package != "Cholesky" && !factory.Query(package))
+      {
+        std::string available = "Cholesky";
+        for (const char *p :
+             {"Amesos_Klu", "Amesos_Mumps", "Amesos_Superludist"})
+          if (factory.Query(p))
+            available += std::string(", ") + p;
+        throw_input_error("Solver/Direct solver",
+                          "<" + package +
+                            "> is not in this build's Trilinos; available: " +
+                            available);
+      }
+    return std::make_unique<DirectSolver<dim>>(package);
   }
 
   template class DirectSolver<2>;

@@ -97,13 +97,15 @@ for ranks in (1, 2):
     check(len(cycles) == 4, "Q2, %d rank(s): 4 adaptive cycles (%s)" % (ranks, cycles[-1] if cycles else "none"))
     compare(out, True, "Q2, %d rank(s)" % ranks)
 
-def elastic_exact(x, y, delta=10.0, k_n=1e7, a=5e3, b=5e3):
-    """(u_x, u_y, s_xx, s_yy, s_xy, s_zz) of the elastic-fault block."""
-    Ep = E / (1 - NU ** 2)
+def elastic_exact(x, y, delta=10.0, k_n=1e7, a=5e3, b=5e3, plane_stress=False):
+    """(u_x, u_y, s_xx, s_yy, s_xy, s_zz) of the elastic-fault block: in
+    plane strain E' = E/(1 - nu^2), eps_yy = -nu (1 + nu) s/E and s_zz = nu
+    s; in plane stress E' = E, eps_yy = -nu s/E and s_zz = 0."""
+    Ep = E if plane_stress else E / (1 - NU ** 2)
     s = delta / ((a + b) / Ep + 1 / k_n)
     u_x = s * x / Ep + (s / k_n if x > a else 0.0)
-    eps_yy = -NU * (1 + NU) * s / E
-    return (u_x, eps_yy * (y - BASE), s, 0.0, 0.0, NU * s)
+    eps_yy = -NU * s / E if plane_stress else -NU * (1 + NU) * s / E
+    return (u_x, eps_yy * (y - BASE), s, 0.0, 0.0, 0.0 if plane_stress else NU * s)
 
 
 for ranks in (1, 2):
@@ -119,6 +121,23 @@ for ranks in (1, 2):
           "elastic fault, %d rank(s): sigma_xx = %.6e Pa (springs in series: %.6e), "
           "opening %.6f m (sigma/k_n = %.6f m), largest relative difference %.1e"
           % (ranks, rows[4]["sigma_xx"], exacts[4][2], opening, exacts[4][2] / 1e7, worst))
+
+# The elastic fault in plane stress (the path the fault terms take with
+# the plane-stress moduli): springs in series with E' = E, so the stress
+# and the opening are smaller than in plane strain by their E' ratio;
+# sigma_zz = 0.
+out = os.path.abspath("output_elastic_fault_plane_stress")
+run("faults/elastic_fault.prm", out, 1, ["Plane state=plane stress"])
+rows = read_csv(os.path.join(out, "point_values.csv"))
+keys = ("u_x", "u_y", "sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz")
+exacts = [elastic_exact(r["x"], r["y"], plane_stress=True) for r in rows]
+worst = max(abs(r[k] - v) / max(abs(e[2]) if k[0] == "s" else abs(e[0]), 1.0)
+            for r, e in zip(rows, exacts) for k, v in zip(keys, e))
+strain = elastic_exact(0, 0)[2]
+check(len(rows) == 6 and worst < 1e-9 and exacts[4][2] < strain,
+      "elastic fault in plane stress: sigma_xx = %.6e Pa (springs in series with E' = E: "
+      "%.6e; plane strain %.6e), largest relative difference %.1e"
+      % (rows[4]["sigma_xx"], exacts[4][2], strain, worst))
 
 # The elastic fault tends to the locked (continuous) block as k_n grows:
 # sigma_xx = delta / ((a + b)/E' + 1/k_n), so the relative difference from

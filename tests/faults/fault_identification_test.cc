@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <string>
 
 using namespace lithostress;
@@ -163,6 +164,45 @@ main(int argc, char **argv)
           std::string("one field in the ") + block_name[b]);
   check(lowest[0] == lowest[2] && lowest[1] != lowest[0],
         "the graben's field differs from both shoulders'");
+
+  // The blocks (RigidBodySupport's bodies): three, one per region, where
+  // the fields are two; each fault between the graben and its shoulder.
+  const RigidBodies<2> blocks             = faults.blocks();
+  unsigned int         block_of_region[3] = {0, 0, 0};
+  bool                 one_block[3] = {true, true, true}, seen[3] = {};
+  for (const auto &cell : dof_handler.active_cell_iterators())
+    if (cell->is_locally_owned())
+      {
+        const Point<2>     c      = cell->center();
+        const unsigned int region = c[0] < fault_x(0, c[1])   ? 0
+                                    : c[0] < fault_x(1, c[1]) ? 1
+                                                              : 2;
+        const unsigned int b      = blocks.of(cell);
+        one_block[region] =
+          one_block[region] && (!seen[region] || b == block_of_region[region]);
+        block_of_region[region] = b;
+        seen[region]            = true;
+      }
+  // The ranks that own cells of a region must agree on its block.
+  bool blocks_ok = blocks.n == 3;
+  for (unsigned int r = 0; r < 3; ++r)
+    {
+      const unsigned int lo =
+        Utilities::MPI::min(seen[r] ? block_of_region[r] : 3U, comm);
+      const unsigned int hi =
+        Utilities::MPI::max(seen[r] ? block_of_region[r] : 0U, comm);
+      blocks_ok          = blocks_ok && one_block[r] && lo == hi;
+      block_of_region[r] = lo;
+    }
+  blocks_ok       = Utilities::MPI::min(blocks_ok ? 1 : 0, comm) == 1;
+  const auto west = faults.blocks_of_fault(0), east = faults.blocks_of_fault(1);
+  check(blocks_ok && block_of_region[0] != block_of_region[2] &&
+          std::set<unsigned int>{west.first, west.second} ==
+            std::set<unsigned int>{block_of_region[0], block_of_region[1]} &&
+          std::set<unsigned int>{east.first, east.second} ==
+            std::set<unsigned int>{block_of_region[1], block_of_region[2]},
+        "three blocks where there are two fields, each fault between the "
+        "graben and its shoulder");
 
   // The interface points: on their fault, normal into the hanging wall
   // (the graben for both faults), shear = normal turned clockwise.

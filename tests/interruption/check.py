@@ -115,4 +115,37 @@ for ranks, sig in ((1, signal.SIGTERM), (2, signal.SIGTERM), (1, signal.SIGINT))
         check(stopped_cycle >= 1 and len(rows) == stopped_cycle,
               "%s: stopped in cycle %d (%s) with %d complete cycles in convergence.csv" % (label, stopped_cycle, m.group(1), len(rows)))
     complete_files(out, label)
+
+# A second signal before the run has stopped ends it at once, by the
+# signal's default action (base/interruption.cc): two SIGTERMs 10 ms apart,
+# too close for the first to reach a safe point and stop (writing the
+# timing table and closing the files takes longer), end the process by
+# SIGTERM itself, not with the orderly stop's status 128 + 15.
+out = os.path.abspath("output_interrupted_twice")
+shutil.rmtree(out, ignore_errors=True)
+process = subprocess.Popen([BINARY, PRM, "--set", "Output directory=" + out,
+                            "--set", "Mesh refinement/Number of cycles=4"],
+                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env())
+log = os.path.join(out, "log.txt")
+deadline = time.time() + 600
+while time.time() < deadline and process.poll() is None:
+    if os.path.exists(log) and "cycle 0:" in open(log).read():
+        break
+    time.sleep(0.2)
+time.sleep(1.0)
+# The launcher execs the program (app/launcher.cc): the same process.
+target = process.pid
+sent = time.time()
+os.kill(target, signal.SIGTERM)
+time.sleep(0.01)
+os.kill(target, signal.SIGTERM)
+try:
+    process.communicate(timeout=60)
+except subprocess.TimeoutExpired:
+    process.kill()
+    check(False, "second SIGTERM: stops (killed after 60 s)")
+seconds = time.time() - sent
+check(process.returncode == -signal.SIGTERM and seconds < 5,
+      "second SIGTERM: ends at once (status %d, %.2f s after the first signal)"
+      % (process.returncode, seconds))
 finish()

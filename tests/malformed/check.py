@@ -46,6 +46,7 @@ expected = {
     "free_in_x_spring_only": "free to translate in x",
     "free_rotation": "free to rotate about (0, 0)",
     "free_in_x_and_rotation": "free to translate in x and to rotate about (0, 2) m",
+    "spring_too_weak": "free to translate in y: no part prescribes a y-displacement and no spring (isostatic restoring force) holds it vertically (the springs are too weak to hold anything: k L / E = 1.",
     # Non-finite values from each kind of user function, named with the
     # entry and where they occur.
     "displacement_infinite": "Boundary conditions/base/y>: the expression <1/0> is infinite at",

@@ -11,6 +11,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <lithostress/base/gravity_field.h>
+#include <lithostress/boundary_conditions/rigid_body_support.h>
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/faults/coulomb_friction.h>
 #include <lithostress/faults/interface_law.h>
@@ -391,10 +392,26 @@ namespace lithostress
     std::vector<std::vector<types::global_dof_index>>
     interface_cliques(const DoFHandler<dim> &dof_handler) const;
 
-    /** Quadrature points (with their JxW) of the fault faces with face
-     * terms whose footwall cell is locally owned: where an elastic fault
-     * holds one side against the other (RigidBodySupport). */
-    std::vector<std::pair<Point<dim>, double>>
+    /** The blocks the faults cut the body into (identify()), whose
+     * rigid-body motions RigidBodySupport tests: one without faults. */
+    RigidBodies<dim>
+    blocks() const;
+
+    /** The two blocks on either side of fault @p k (each fault runs from
+     * boundary to boundary and meets no other inside the body, so it has
+     * one block on each side). */
+    std::pair<unsigned int, unsigned int>
+    blocks_of_fault(const unsigned int k) const
+    {
+      return fault_blocks[k];
+    }
+
+    /** The quadrature points of the fault faces with face terms whose
+     * footwall cell is locally owned, each holding its fault's two blocks
+     * together with the identity stiffness: how every elastic or
+     * frictional fault holds before anything slides (the elastic
+     * predictor; RigidBodySupport::check). */
+    std::vector<BodyCoupling<dim>>
     interface_points(const DoFHandler<dim>         &dof_handler,
                      const FiniteElementSpace<dim> &fe_space) const;
 
@@ -481,6 +498,12 @@ namespace lithostress
               const std::function<bool(const Fault &)> &which,
               const ContactState                       *contact) const;
 
+    /** identify()'s second half: the blocks between the faults' coarse
+     * faces (coarse_face_fault), their fields (a two-colouring) and
+     * numbers, and each fault's two blocks. */
+    void
+    cut_into_blocks(const Triangulation<dim> &triangulation);
+
     /** The coarse cell (level 0) that @p cell descends from. */
     template <class Iterator>
     unsigned int
@@ -506,6 +529,10 @@ namespace lithostress
     /** identify()'s results: each coarse cell's field, and the fault of
      * each of its faces (-1: none). */
     std::vector<unsigned char> coarse_field;
+    /** Each coarse cell's block (0, 1, ...), and each fault's two
+     * blocks. */
+    std::vector<unsigned int>                          coarse_block;
+    std::vector<std::pair<unsigned int, unsigned int>> fault_blocks;
     std::vector<std::array<int, GeometryInfo<dim>::faces_per_cell>>
       coarse_face_fault;
     /** Whether each coarse face on a fault lies on its welded extension

@@ -344,6 +344,16 @@ namespace lithostress
         return contact && !coupling.active();
       }
 
+      /** Throw a ComputationError (on every rank) if the faults' tangents
+       * of the last set_up() and the active constraints leave a block of
+       * the body free to move as a rigid body (RigidBodySupport over the
+       * blocks the faults cut, each point holding its two blocks with its
+       * tangent): the linearised system is then singular, and no Krylov
+       * solve can end it (a graben whose faults carry no normal stress,
+       * their points open or sliding freely). */
+      void
+      check_blocks_held() const;
+
       /** "<n> sliding, <m> open of <N> points" over all ranks. */
       std::string
       count_states() const;

@@ -78,6 +78,11 @@ namespace lithostress
     const std::vector<Material> &
     materials() const;
 
+    /** The largest Young's modulus of the materials [Pa]: the rock's
+     * stiffness that a spring's is measured against (RigidBodySupport). */
+    double
+    largest_youngs_modulus() const;
+
     /** Whether a material has id @p id. */
     bool
     has(const types::material_id id) const;
