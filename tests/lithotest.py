@@ -154,7 +154,8 @@ def check_settled_newton(label, solves, reduction=1e-2, floor=1e-11):
     @solves (newton_solves) reduces the residual by at least @reduction,
     down to the round-off @floor of the residual relative to the load (10x
     margin on the linear solve's 1e-3). At least one step must be settled
-    (a solve started from a converged solution has none)."""
+    above the floor (a solve started from a converged solution has none):
+    with none the check would test nothing."""
     ratios, n_steps, n_settled = [], 0, 0
     for solve in solves:
         steps = settled_steps(solve)
@@ -162,7 +163,7 @@ def check_settled_newton(label, solves, reduction=1e-2, floor=1e-11):
         n_settled += len(steps)
         ratios += [solve[i]["residual"] / solve[i - 1]["residual"] for i in steps
                    if solve[i - 1]["residual"] > floor]
-    check(n_settled > 0 and all(r <= reduction for r in ratios),
+    check(n_settled > 0 and len(ratios) > 0 and all(r <= reduction for r in ratios),
           "%s: %d Newton steps in %d solves, %d with the states standing still, residual ratios "
           "there %s (each <= %g above %g: the settled problem is linear)"
           % (label, n_steps, len(solves), n_settled, ", ".join("%.1e" % r for r in ratios),

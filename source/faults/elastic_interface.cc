@@ -2,9 +2,18 @@
 #include <lithostress/faults/elastic_interface.h>
 
 #include <cctype>
+#include <cmath>
+#include <sstream>
+#include <utility>
 
 namespace lithostress
 {
+  namespace
+  {
+    /** The largest stiffness per unit area of an interface [Pa/m]. */
+    constexpr double max_stiffness = 1e30;
+  } // namespace
+
   template <int dim>
   void
   ElasticInterface<dim>::declare_parameters(ParameterHandler &prm)
@@ -77,6 +86,28 @@ namespace lithostress
         f.shear_stiffness /= l;
         f.normal_stiffness /= l;
       }
+    // A stiffness per area the assembly would overflow with (a Thesis
+    // element length of 1e-300 km turns 5e10 N/m into 5e307 Pa/m, and the
+    // tangent into infinities) is named here. 1e30 Pa/m is 1e16 times a
+    // rock's E per metre: far stiffer than any fault needs to be (a locked
+    // one is `Interface law = locked`).
+    for (const auto &[k, name] :
+         {std::make_pair(f.shear_stiffness, "Shear stiffness"),
+          std::make_pair(f.normal_stiffness, "Normal stiffness")})
+      if (!(std::abs(k) <= max_stiffness))
+        {
+          std::ostringstream what;
+          what << "gives a stiffness per unit area of " << k << " Pa/m, beyond "
+               << max_stiffness
+               << " Pa/m (for a fault that does not slip use Interface "
+                  "law = locked)";
+          throw_input_error(
+            "Faults/" + fault + "/" +
+              (Utilities::trim(prm.get("Thesis element length")).empty()
+                 ? std::string(name)
+                 : std::string("Thesis element length")),
+            what.str());
+        }
   }
 
   template <int dim>

@@ -81,6 +81,7 @@ expected = {
     "thesis_reading_with_newton": "Faults/Sliding solver/Thesis stress reading>: applies to Method = thesis only",
     "sliding_solver_unknown": "The entry value magic for the entry named Linear solver does not match the given pattern",
     "fault_stiffness_zero": "Faults/fault/Shear stiffness>: must be greater than 0, got 0",
+    "fault_stiffness_overflows": "Faults/fault/Thesis element length>: gives a stiffness per unit area of 5e+307 Pa/m, beyond 1e+30 Pa/m",
     "fault_stiffness_missing": "Faults/fault/Shear stiffness>: is needed by the elastic law",
     "normal_stiffness_word": "Faults/fault/Normal stiffness>: must be `exact` or a stiffness per unit area [Pa/m], got <rigid>",
     "fault_arc_misses_box": "Geometry/Layered box/Fault arc centre>: the arc misses the box",
