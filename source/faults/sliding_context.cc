@@ -325,7 +325,7 @@ namespace lithostress
 
     template <int dim>
     void
-    SlidingContext<dim>::set_up(const Law &law)
+    SlidingContext<dim>::set_up(const Law &law, const bool check_blocks)
     {
       Timer      timer;
       const bool fresh =
@@ -378,6 +378,8 @@ namespace lithostress
         kept.strip.compress();
       rhs.compress(VectorOperation::add);
       time_assembly += timer.wall_time();
+      if (check_blocks)
+        check_blocks_held();
       // A kept preconditioner (the factorisation, or the multigrid's
       // Galerkin levels and smoothers) was made from an earlier tangent,
       // which differs from this one only at the fault: it is made again

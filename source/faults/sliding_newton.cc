@@ -51,16 +51,12 @@ namespace lithostress
             c.set_up(c.stuck_law(
               [this](const unsigned int i) { return c.history.committed(i); }));
           else
-            {
-              c.set_up(
-                [this](const PointValues &values,
-                       Tensor<1, dim>    &t,
-                       Tensor<2, dim>    &D) { c.newton_law(values, t, D); });
-              // A change of the states may leave a block unheld: named
-              // at once, not after a Krylov solve that cannot converge.
-              if (changed)
-                c.check_blocks_held();
-            }
+            // A change of the states may leave a block unheld: named at
+            // once, not by a factorisation or a Krylov solve that fails.
+            c.set_up([this](const PointValues &values,
+                            Tensor<1, dim>    &t,
+                            Tensor<2, dim> &D) { c.newton_law(values, t, D); },
+                     changed);
           c.couple_friction_limits(!predictor);
           step      = u;
           c.forcing = changed || c.limits_follow_reactions()

@@ -237,9 +237,11 @@ namespace lithostress
 
       /** The system of the law @p law linearised at u_ghost (the bulk
        * matrix with ∫[v]·D[u], the right-hand side less the affine part),
-       * and its AMG. */
+       * and its preconditioner; with @p check_blocks, check_blocks_held()
+       * on the new tangent before the preconditioner is made (a
+       * factorisation of a singular system fails without saying why). */
       void
-      set_up(const Law &law);
+      set_up(const Law &law, const bool check_blocks = false);
 
       /** Bytes of the factorisation's factor, where it can be measured
        * (the Cholesky factor), else 0. */
