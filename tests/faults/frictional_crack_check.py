@@ -60,10 +60,17 @@ def slips(out):
 
 def worst_error(out, mu):
     """The largest |slip - ellipse| over the interface points, relative
-    to the ellipse's largest slip, and that largest slip."""
+    to the ellipse's largest slip, and that largest slip. An empty or
+    short fault.csv fails: the largest slip found must be within 1 % of
+    the ellipse's (the check's error bound)."""
     largest = 2 * (1 - NU) * (TAU - mu * SIGMA_N) * A / G
     worst = 0.0
-    for s, slip in slips(out).items():
+    found = slips(out)
+    peak = max((abs(v) for v in found.values()), default=0.0)
+    check(len(found) >= 16 and abs(peak - largest) <= 0.01 * largest,
+          "%s: %d interface points, the largest slip %.4f m (the ellipse's %.4f m)"
+          % (os.path.basename(out), len(found), peak, largest))
+    for s, slip in found.items():
         y = A - s
         exact = largest * math.sqrt(max(0.0, 1 - (y / A) ** 2))
         worst = max(worst, abs(abs(slip) - exact))

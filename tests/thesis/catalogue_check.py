@@ -56,6 +56,7 @@ check(not missing, "%d keys measured by reproduce_thesis.py are in the catalogue
       % (len(pairs), missing))
 with open(os.path.join(ROOT, "scripts", "thesis_explanations.csv")) as f:
     explained = {(r["experiment"], r["quantity"]) for r in csv.DictReader(f)}
-check(explained <= known, "every explanation names a catalogue row (unknown: %s)"
-      % sorted(explained - known))
+check(len(explained) > 0 and explained <= known,
+      "%d explanations, every one naming a catalogue row (unknown: %s)"
+      % (len(explained), sorted(explained - known)))
 finish()
