@@ -28,6 +28,11 @@ cases = [("uniform", 1, []),
 for name, ranks, sets in cases:
     out = os.path.abspath("output_column_" + name)
     run("lithostatic_column/column.prm", out, ranks, sets + ["Solver/Relative tolerance=1e-12"])
+    # Every cycle the run was given has its row (an empty table would
+    # pass the per-row checks below).
+    cycles = int(read_prm(os.path.join(out, "parameters.prm"))["Mesh refinement/Number of cycles"])
+    check(len(table(out)) == cycles, "%s: convergence.csv has a row for each of the %d cycles"
+          % (name, cycles))
     for row in table(out):
         tag = "%s cycle %d (%d DoFs)" % (name, row["cycle"], row["dofs"])
         check(row["rel_L2(u)"] < TOL, "%s: relative L2 error of u %.1e < %.0e" % (tag, row["rel_L2(u)"], TOL))
