@@ -190,10 +190,7 @@ namespace lithostress
     RigidBodies<dim> bodies;
     if (faults.empty())
       return bodies;
-    bodies.n =
-      fault_blocks.empty()
-        ? 1
-        : 1 + *std::max_element(coarse_block.begin(), coarse_block.end());
+    bodies.n  = 1 + *std::max_element(coarse_block.begin(), coarse_block.end());
     bodies.of = [this](const typename Triangulation<dim>::cell_iterator &cell) {
       return coarse_block[coarse_index(cell)];
     };

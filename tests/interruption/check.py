@@ -64,6 +64,18 @@ def complete_files(out, label):
     check("stopped by" in log and log.rstrip().endswith("+"), "%s: log.txt says where it stopped and ends with the timing table" % label)
 
 
+def wait_for_first_cycle(process, out):
+    """Until log.txt in @out says cycle 0 is complete (or the run ended,
+    or 600 s), then one second more: the signal then comes in cycle 1."""
+    log = os.path.join(out, "log.txt")
+    deadline = time.time() + 600
+    while time.time() < deadline and process.poll() is None:
+        if os.path.exists(log) and "cycle 0:" in open(log).read():
+            break
+        time.sleep(0.2)
+    time.sleep(1.0)
+
+
 for ranks, sig in ((1, signal.SIGTERM), (2, signal.SIGTERM), (1, signal.SIGINT)):
     name = "SIGTERM" if sig == signal.SIGTERM else "SIGINT"
     label = "%s on %d rank%s" % (name, ranks, "s" if ranks > 1 else "")
@@ -77,14 +89,8 @@ for ranks, sig in ((1, signal.SIGTERM), (2, signal.SIGTERM), (1, signal.SIGINT))
     process = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=environment)
     # Wait until the first cycle is complete, then signal (mpirun forwards
     # it to every rank).
-    log = os.path.join(out, "log.txt")
-    deadline = time.time() + 600
-    while time.time() < deadline and process.poll() is None:
-        if os.path.exists(log) and "cycle 0:" in open(log).read():
-            break
-        time.sleep(0.2)
+    wait_for_first_cycle(process, out)
     check(process.poll() is None, "%s: the run is still going after cycle 0" % label)
-    time.sleep(1.0)
     sent = time.time()
     if ranks == 1:
         process.send_signal(sig)
@@ -126,13 +132,8 @@ shutil.rmtree(out, ignore_errors=True)
 process = subprocess.Popen([BINARY, PRM, "--set", "Output directory=" + out,
                             "--set", "Mesh refinement/Number of cycles=4"],
                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env())
-log = os.path.join(out, "log.txt")
-deadline = time.time() + 600
-while time.time() < deadline and process.poll() is None:
-    if os.path.exists(log) and "cycle 0:" in open(log).read():
-        break
-    time.sleep(0.2)
-time.sleep(1.0)
+wait_for_first_cycle(process, out)
+check(process.poll() is None, "second SIGTERM: the run is still going after cycle 0")
 # The launcher execs the program (app/launcher.cc): the same process.
 target = process.pid
 sent = time.time()
