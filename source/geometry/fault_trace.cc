@@ -89,8 +89,9 @@ namespace lithostress
   }
 
   double
-  FaultTrace::x_at(const double y) const
+  FaultTrace::x_at(double y) const
   {
+    y = std::max(y, top_y - vertical_below_depth);
     if (has_arc && top_y - y >= arc_from_depth)
       {
         const double dy = y - arc_centre[1];
@@ -126,6 +127,9 @@ namespace lithostress
     if (!polyline.empty())
       return project(p).s;
     const double d = depth(p);
+    if (d > vertical_below_depth)
+      return trace_distance(point_at_depth(vertical_below_depth)) +
+             (d - vertical_below_depth);
     if (!has_arc || d < arc_from_depth)
       return d / std::sin(dip);
     // The planar part, then the arc from the junction to the point.
@@ -155,6 +159,11 @@ namespace lithostress
         if (d * chord < 0)
           d = -d;
         return d / d.norm();
+      }
+    if (depth(p) > vertical_below_depth)
+      {
+        d[1] = -1;
+        return d;
       }
     if (!on_arc(p))
       {

@@ -38,6 +38,9 @@ namespace lithostress
           return s[0][0] - mean;
         case Component::deviatoric_yy:
           return s[1][1] - mean;
+        case Component::u_x:
+        case Component::u_y:
+          break;
         }
       return 0;
     }
@@ -312,6 +315,10 @@ namespace lithostress
         return "deviatoric_xx";
       case Component::deviatoric_yy:
         return "deviatoric_yy";
+      case Component::u_x:
+        return "u_x";
+      case Component::u_y:
+        return "u_y";
       }
     return "";
   }
@@ -332,6 +339,16 @@ namespace lithostress
       "deviatoric_xx or deviatoric_yy). Reported each cycle in the "
       "convergence table; `Indicator = goal oriented` refines where their "
       "error arises.");
+    prm.declare_entry(
+      "Displacement averages",
+      "",
+      Patterns::Anything(),
+      "Quantities of interest: means of a displacement component over the "
+      "part of the body inside a box, `name: component, x_min, x_max, "
+      "y_min, y_max; ...` (length unit; component u_x or u_y); a thin box "
+      "under the top is the surface displacement over its width (a buried "
+      "fault's uplift). Reported and used like `Stress averages`; the names "
+      "of both entries must differ.");
     prm.declare_entry("Stop at relative change",
                       "0",
                       Patterns::Double(0, 1),
@@ -350,14 +367,39 @@ namespace lithostress
                                      const double      length_scale)
   {
     static_assert(dim == 2, "goal boxes are given in 2-D");
-    const std::string entry = "Mesh refinement/Goals/Stress averages";
     prm.enter_subsection("Mesh refinement");
     prm.enter_subsection("Goals");
-    const std::string text = prm.get("Stress averages");
-    tolerance              = prm.get_double("Stop at relative change");
+    const std::string stresses      = prm.get("Stress averages");
+    const std::string displacements = prm.get("Displacement averages");
+    tolerance                       = prm.get_double("Stop at relative change");
     prm.leave_subsection();
     prm.leave_subsection();
     goals.clear();
+    parse_goals("Mesh refinement/Goals/Stress averages",
+                stresses,
+                {Component::sigma_xx,
+                 Component::sigma_yy,
+                 Component::sigma_xy,
+                 Component::sigma_zz,
+                 Component::deviatoric_xx,
+                 Component::deviatoric_yy},
+                length_scale);
+    parse_goals("Mesh refinement/Goals/Displacement averages",
+                displacements,
+                {Component::u_x, Component::u_y},
+                length_scale);
+  }
+
+  template <int dim>
+  void
+  StressGoals<dim>::parse_goals(const std::string            &entry,
+                                const std::string            &text,
+                                const std::vector<Component> &allowed,
+                                const double                  length_scale)
+  {
+    std::string names;
+    for (const Component c : allowed)
+      names += (names.empty() ? "" : ", ") + component_name(c);
     for (const std::string &item : split_list(text, ';'))
       {
         const auto colon = item.find(':');
@@ -387,24 +429,15 @@ namespace lithostress
                               "`: expected a component and four numbers "
                               "(x_min, x_max, y_min, y_max), got `" +
                               item.substr(colon + 1) + "`");
-        bool known = false;
-        for (const Component c : {Component::sigma_xx,
-                                  Component::sigma_yy,
-                                  Component::sigma_xy,
-                                  Component::sigma_zz,
-                                  Component::deviatoric_xx,
-                                  Component::deviatoric_yy})
-          if (fields[0] == component_name(c))
-            {
-              goal.component = c;
-              known          = true;
-            }
-        if (!known)
+        const auto known =
+          std::find_if(allowed.begin(), allowed.end(), [&](const Component c) {
+            return fields[0] == component_name(c);
+          });
+        if (known == allowed.end())
           throw_input_error(entry,
                             "goal `" + goal.name + "`: unknown component `" +
-                              fields[0] +
-                              "` (sigma_xx, sigma_yy, sigma_xy, sigma_zz, "
-                              "deviatoric_xx or deviatoric_yy)");
+                              fields[0] + "` (" + names + ")");
+        goal.component = *known;
         double v[4];
         for (unsigned int i = 0; i < 4; ++i)
           v[i] = parse_number(fields[i + 1], entry) * length_scale;
@@ -511,7 +544,9 @@ namespace lithostress
     for (unsigned int k = 0; k < goals.size(); ++k)
       {
         if (!(area(k, dof_handler, fe_space) > 0))
-          throw_input_error("Mesh refinement/Goals/Stress averages",
+          throw_input_error(is_displacement(goals[k].component)
+                              ? "Mesh refinement/Goals/Displacement averages"
+                              : "Mesh refinement/Goals/Stress averages",
                             "the box of goal `" + goals[k].name +
                               "` does not meet the body");
       }
@@ -526,6 +561,7 @@ namespace lithostress
   {
     std::vector<double>                            result;
     std::vector<Tensor<2, dim>>                    grads;
+    std::vector<Tensor<1, dim>>                    displacements;
     typename DoFHandler<dim>::active_cell_iterator current;
     for (unsigned int k = 0; k < goals.size(); ++k)
       {
@@ -543,6 +579,17 @@ namespace lithostress
                   fe_space.field_of(cell->active_fe_index()));
                 grads.resize(fv.n_quadrature_points);
                 fv[u].get_function_gradients(solution, grads);
+                displacements.resize(fv.n_quadrature_points);
+                fv[u].get_function_values(solution, displacements);
+              }
+            sums[1] += fv.JxW(q);
+            if (is_displacement(goals[k].component))
+              {
+                sums[0] +=
+                  displacements[q]
+                               [goals[k].component == Component::u_x ? 0 : 1] *
+                  fv.JxW(q);
+                return;
               }
             const StressState<dim> s =
               stress_model.stress(cell,
@@ -551,7 +598,6 @@ namespace lithostress
                                   symmetrize(grads[q]));
             sums[0] += component_of<dim>(goals[k].component, s.in_plane, s.zz) *
                        fv.JxW(q);
-            sums[1] += fv.JxW(q);
           });
         Utilities::MPI::sum(sums, dof_handler.get_communicator(), sums);
         result.push_back(sums[0] / sums[1]);
@@ -576,13 +622,20 @@ namespace lithostress
           dof_handler,
           fe_space,
           [&](const auto &cell, const FEValues<dim> &fv, const unsigned q) {
+            sums[1] += fv.JxW(q);
+            if (is_displacement(goals[k].component))
+              {
+                sums[0] += reference.displacement(fv.quadrature_point(
+                             q))[goals[k].component == Component::u_x ? 0 : 1] *
+                           fv.JxW(q);
+                return;
+              }
             const ElasticModuli<dim> &moduli =
               stress_model.moduli(cell->material_id());
             const SymmetricTensor<2, dim> s =
               reference.stress(fv.quadrature_point(q));
             const double zz = moduli.sigma_zz(moduli.compliance() * s);
             sums[0] += component_of<dim>(goals[k].component, s, zz) * fv.JxW(q);
-            sums[1] += fv.JxW(q);
           });
         Utilities::MPI::sum(sums, dof_handler.get_communicator(), sums);
         result.push_back(sums[0] / sums[1]);
@@ -629,6 +682,13 @@ namespace lithostress
           }
         const auto u =
           fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
+        if (is_displacement(goals[k].component))
+          {
+            const unsigned int c = goals[k].component == Component::u_x ? 0 : 1;
+            for (unsigned int i = 0; i < fv.get_fe().n_dofs_per_cell(); ++i)
+              local(i) += fv[u].value(i, q)[c] * fv.JxW(q) / region;
+            return;
+          }
         const types::material_id  id      = cell->material_id();
         const bool                uniform = stress_model.uniform_tangent(id);
         const ElasticModuli<dim> &moduli  = stress_model.step_moduli(id);

@@ -28,11 +28,12 @@ namespace lithostress
         stress_goals.empty())
       throw_input_error("Mesh refinement/Indicator",
                         "`goal oriented` needs the goals in Mesh "
-                        "refinement/Goals/Stress averages");
+                        "refinement/Goals/Stress averages or Displacement "
+                        "averages");
     if (stress_goals.stop_tolerance() > 0 && stress_goals.empty())
       throw_input_error("Mesh refinement/Goals/Stop at relative change",
                         "needs the goals in Mesh refinement/Goals/Stress "
-                        "averages");
+                        "averages or Displacement averages");
   }
 
   template <int dim>

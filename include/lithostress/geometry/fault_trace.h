@@ -78,6 +78,12 @@ namespace lithostress
      * its upper end [m]; outside it the trace is a welded extension. The
      * default is the whole trace. */
     double begin_s = 0, end_s = std::numeric_limits<double>::infinity();
+    /** Below this depth [m] the planar or listric trace goes straight down
+     * (x_f(y) = x_f at that depth): the welded extension below a buried
+     * lower tip whose plane would leave the box through a side before the
+     * base (LayeredBox). Infinite (the default): the trace follows its
+     * plane or arc to the base. */
+    double vertical_below_depth = std::numeric_limits<double>::infinity();
 
     /** Whether the fault ends inside the body above (a buried upper tip). */
     bool
@@ -122,9 +128,10 @@ namespace lithostress
     void
     choose_branch(const double depth);
 
-    /** x of the fault at height @p y (the planar or listric trace). */
+    /** x of the fault at height @p y (the planar or listric trace, and
+     * straight down below `vertical_below_depth`). */
     double
-    x_at(const double y) const;
+    x_at(double y) const;
 
     /** Whether @p p lies in the hanging wall (else in the footwall). */
     bool

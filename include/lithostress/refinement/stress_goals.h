@@ -33,7 +33,10 @@ namespace lithostress
    * over the part S_i of the body inside an axis-parallel box — the
    * "regional stress" of a layer at an edge, the stress above an anomaly —
    * the numbers the thesis quotes (chapter 7) and that a convergence study
-   * should converge. Each J_i is linear in the displacement, so its error
+   * should converge; or of a displacement component, J_i(u) = (1/|S_i|)
+   * ∫_{S_i} u·e_i dx (`Displacement averages`): over a thin box under the
+   * top, the surface displacement that a buried fault's closed form and a
+   * geodetic profile give. Each J_i is linear in the displacement, so its error
    * is weighted by the solution z_i of the dual problem a(v, z_i) = J_i(v)
    * (Becker & Rannacher 2001; step-14): the goal-oriented indicator
    * η_K = η_K(u) Σ_i η_K(z_i) / |J_i(u)| bounds each goal's error by
@@ -57,8 +60,17 @@ namespace lithostress
       sigma_xy,
       sigma_zz,
       deviatoric_xx,
-      deviatoric_yy
+      deviatoric_yy,
+      u_x,
+      u_y
     };
+
+    /** Whether @p component is one of the displacement's. */
+    static bool
+    is_displacement(const Component component)
+    {
+      return component == Component::u_x || component == Component::u_y;
+    }
 
     /** One regional mean. */
     struct Goal
@@ -179,6 +191,15 @@ namespace lithostress
     component_name(const Component component);
 
   private:
+    /** The goals of one entry (`Stress averages` or `Displacement
+     * averages`, @p text as given), whose components must be among
+     * @p allowed; appended to `goals`. */
+    void
+    parse_goals(const std::string            &entry,
+                const std::string            &text,
+                const std::vector<Component> &allowed,
+                const double                  length_scale);
+
     /** The area of the part of the body in goal @p k's box (all ranks). */
     double
     area(const unsigned int             k,
