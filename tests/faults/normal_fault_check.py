@@ -4,9 +4,14 @@ horizontal tension on the left edge, no body force, fluid base) and
 prm/thrust_fault.prm (26.57 degrees, compression), solved by the
 semi-smooth Newton method on coarse meshes (Debug build).
 
-* Newton iterations at 50 MPa stay within +-2 over three uniform refinement
-  levels (200 to 3200 cells), and the throw converges (< 1 % change
-  between the last two levels).
+* Newton at 50 MPa on three uniform refinement levels (200 to 3200
+  cells): once the fault states stand still every step reduces the
+  residual by at least 1e-2 (lithotest.check_settled_newton: the settled
+  problem is linear, solved to the linear solve's 1e-3; measured ratios
+  9.9e-4 and below), a property instead of a count (measured 4, 4 and 6
+  iterations in the Debug build: the steps that change the states depend
+  on where the inexact solves stop); and the throw converges
+  (< 1 % change between the last two levels).
 * Sense of slip: under tension every sliding point slips in the normal sense
   (hanging wall down, slip > 0) and the throw is positive; under
   compression the slip is reverse (slip < 0) and the throw negative.
@@ -42,11 +47,11 @@ semi-smooth Newton method on coarse meshes (Debug build).
 import json
 import math
 import os
-import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from lithotest import SOURCE, check, finish, read_csv, run  # noqa: E402
+from lithotest import (SOURCE, check, check_settled_newton, finish, newton_solves,  # noqa: E402
+                       read_csv, run)
 
 ROOT = os.path.dirname(SOURCE)
 
@@ -76,18 +81,23 @@ def fault_run(prm, name, level, tension=None, ranks=1):
         f.readline()
         fault = [line.strip().split(",") for line in f if line.strip()]
     fault = [dict(s=float(r[0]), y=float(r[2]), slip=float(r[3]), state=r[7]) for r in fault]
-    newton = [int(n) for n in re.findall(r"Newton iteration (\d+):", result.stdout)]
-    return out, summary, fault, newton
+    return out, summary, fault, result.stdout
 
 
 # 50 MPa over three levels.
 levels = {}
 for level in (1, 2, 3):
     levels[level] = fault_run(NORMAL, "output_normal_fault_level%d" % level, level)
-its = [levels[l][1]["nonlinear_iterations"] for l in (1, 2, 3)]
-check(max(its) - min(its) <= 4 and max(its) <= 10,
-      "normal fault, 50 MPa: Newton iterations %s over 200, 800 and 3200 cells stay within +-2 "
-      "(at most 10)" % its)
+# Newton's convergence as a property, not a count: the steps that change
+# the fault states depend on where the inexact linear solves stop (and on
+# the build and the rank count), so a bound on the count has no margin
+# that variation cannot eat; once the states stand still the problem is
+# linear and every step must reduce the residual by the linear solve's
+# accuracy (newton_solves fails the test if the log has no Newton lines).
+for level, cells in ((1, 200), (2, 800), (3, 3200)):
+    check_settled_newton("normal fault, 50 MPa, %d cells (%d Newton iterations)"
+                         % (cells, levels[level][1]["nonlinear_iterations"]),
+                         newton_solves(levels[level][3]))
 throws = [levels[l][1]["throw_m"] for l in (1, 2, 3)]
 check(abs(throws[2] - throws[1]) <= 0.01 * abs(throws[2]) and holds("normal 50 MPa", throws[2]),
       "normal fault, 50 MPa: throw %s m converges (last change %.2f %%) to the converged 369.2 m "

@@ -88,12 +88,21 @@ def restart(name, sets, reference):
     same_states = all(x["state"] == y["state"] for x, y in zip(a, b))
     steps_a = read_csv(os.path.join(reference, "time_steps.csv"))
     steps_b = read_csv(os.path.join(partial, "time_steps.csv"))
-    same_steps = len(steps_a) == len(steps_b) and all(
-        abs(x["time"] - y["time"]) <= 1e-12 * x["time"] for x, y in zip(steps_a, steps_b))
-    check(len(a) == len(b) and same_states and same_steps and worst <= 1e-8,
+    # The step lengths follow the creep estimate of the solution (doubled
+    # or kept against the tolerance, rescaled by it after a rejection), and
+    # 2 ranks reproduce the solution to where the sliding solver stops (a
+    # residual of 1e-9 of the load; the fault to 1e-8, asserted here), so
+    # the times are compared to the same 1e-8 relative, not bit for bit.
+    time_worst = max([abs(x["time"] - y["time"]) / x["time"] for x, y in zip(steps_a, steps_b)],
+                     default=0.0)
+    same_steps = (len(steps_a) == len(steps_b) > 0
+                  and [x["step"] for x in steps_a] == [y["step"] for y in steps_b]
+                  and time_worst <= 1e-8)
+    check(len(a) == len(b) > 0 and same_states and same_steps and worst <= 1e-8,
           "%s: run to 5 kyr, resumed on 2 ranks to 10 kyr = uninterrupted run "
-          "(%d steps, %d fault points, largest relative difference %.1e)"
-          % (LABEL[name], len(steps_b), len(b), worst))
+          "(%d and %d steps, times to %.1e relative; %d and %d fault points, largest relative "
+          "difference %.1e; both allowed 1e-8)"
+          % (LABEL[name], len(steps_a), len(steps_b), time_worst, len(a), len(b), worst))
 
 
 for name, sets, buried in (("", [], False), ("_buried", BURIED, True)):

@@ -4,12 +4,16 @@ verifications 2 and 3).
 2. The verification problems of the elastic core — lithostatic column,
    cantilever, Lame cylinder, adaptive L-shaped domain — give the same
    errors and rates with both solvers.
-3. Multigrid iteration counts stay within +-2 of a central value (their
-   range is at most 4) over all cycles after the first (the first cycle is
-   the coarse mesh or close to it: a direct solve or a two-level cycle), on
-   the cantilever and flexure problems under global refinement and on the
-   adaptively refined L-shaped domain: the preconditioner is
-   h-independent.
+3. The preconditioner is h-independent: over the cycles after the first
+   (the first cycle is the coarse mesh or close to it: a direct solve or a
+   two-level cycle) the mean multigrid iteration count of the finest third
+   of the cycles is at most 1.5 times that of the coarsest third (FLATNESS
+   below: measured 0.90, 1.07 and 0.92; counts 9-10, 8-11 and 6-7), on the
+   cantilever and flexure problems under global refinement and on the
+   adaptively refined L-shaped domain, and with global coarsening (0.90
+   and 1.00 on 1 and 2 ranks). A property rather than a range of counts:
+   the counts move by 1 with the build, the rank count and where an inexact
+   solve stops.
 The coarse level solved by CG + AMG to 1e-8 (Multigrid coarse solver = AMG)
 instead of KLU: the same errors and the same iteration counts to +-1 (a
 count can flip when the residual lands at the tolerance) on the cantilever
@@ -99,15 +103,48 @@ def log_tolerance(row, column, tol):
     """How far log(error) of @row may move for a difference within @tol."""
     return tol / row["rel_L2(u)"] if column == "L2(u)" else tol
 AMG = "Solver/Type=AMG"
+# The preconditioner is h-independent: the mean iteration count over the
+# finest third of the cycles (after the first) is at most FLATNESS times
+# that over the coarsest third. Measured 0.90 (cantilever), 1.07 (L-shaped
+# domain), 0.92 (flexure), 0.90 and 1.00 with global coarsening. A count
+# moves by 1 where the residual lands at the tolerance (build flags, AVX2,
+# rank count, inexact coarse solves): even every count of the finest third
+# one higher and every one of the coarsest one lower gives at most 1.34
+# (7 / 7 -> 8 / 6, the L-shaped domain under global coarsening). An
+# h-dependent preconditioner multiplies CG's count by about 2 per
+# refinement (sqrt(cond) ~ 1/h), and the thirds' centres are 2 (flexure),
+# 3 (cantilever) and about 8-13 (the adaptive L-shaped domain, whose corner
+# gains nearly a level per cycle: 15 levels at cycle 18) levels apart.
+FLATNESS = 1.5
+
+
+def check_flat(label, counts, first):
+    """Asserts the h-independence above for counts[first:] (cells, solver,
+    iterations per cycle; at least three cycles, else it tests nothing)."""
+    its = [n for _, _, n in counts[first:]]
+    third = max(1, -(-len(its) // 3))  # ceil(len/3): disjoint thirds from 3 cycles on
+    coarse, fine = its[:third], its[-third:]
+    ratio = (sum(fine) / len(fine)) / (sum(coarse) / len(coarse)) if len(its) >= 3 else math.inf
+    check(len(its) >= 3 and ratio <= FLATNESS,
+          "%s: multigrid iterations %s over %d to %d cells: mean of the finest %d cycles / mean of "
+          "the coarsest %d = %.2f (at most %.2f: h-independent)"
+          % (label, its, counts[first][0] if len(counts) > first else 0, counts[-1][0], third,
+             third, ratio, FLATNESS))
 
 
 def iterations(output):
-    """(levels known?, solver, iterations) per cycle from log.txt."""
+    """(cells, solver, iterations) per cycle from log.txt. Fails the test
+    unless there is one per row of convergence.csv: a parser that finds
+    nothing (or misses cycles) must not let the checks over its list pass."""
     counts = []
     for line in open(os.path.join(output, "log.txt")):
         m = re.match(r"cycle (\d+): (\d+) cells, (\d+) DoFs, (\S+) (\d+) it", line)
         if m:
             counts.append((int(m.group(2)), m.group(4), int(m.group(5))))
+    cycles = len(table(output))
+    if not counts or len(counts) != cycles:
+        fail("%s/log.txt: %d 'cycle N: ... <solver> <n> it' lines for the %d cycles of "
+             "convergence.csv" % (output, len(counts), cycles))
     return counts
 
 
@@ -119,8 +156,15 @@ for solver in (MG, AMG):
     run("lithostatic_column/column.prm", out, 1,
         [solver, "Solver/Relative tolerance=1e-12", "Output/Write ParaView files=false",
          "Mesh refinement/Strategy=adaptive", "Mesh refinement/Marking=fraction of cells",
-         "Mesh refinement/Refine fraction=0.3", "Mesh refinement/Number of cycles=4"])
-    for row in table(out):
+         "Mesh refinement/Refine fraction=0.3", "Mesh refinement/Number of cycles=4",
+         "Mesh refinement/Initial global refinement=1"])
+    rows = table(out)
+    # From 4 cells, a fraction 0.3 refines one cell per cycle (the
+    # indicators are round-off and tie): hanging nodes on every later mesh.
+    check(len(rows) == 4 and all(b["dofs"] > a["dofs"] for a, b in zip(rows, rows[1:])),
+          "column, %s: %d cycles in convergence.csv (4 expected), DoFs %s grow (hanging nodes)"
+          % (solver, len(rows), [int(r["dofs"]) for r in rows]))
+    for row in rows:
         check(row["rel_L2(u)"] < 1e-9 and row["rel_L2(stress)"] < 1e-9,
               "column, %s, %d DoFs: relative L2 errors %.1e (u), %.1e (stress) at round-off"
               % (solver, row["dofs"], row["rel_L2(u)"], row["rel_L2(stress)"]))
@@ -144,7 +188,8 @@ for prm, columns, sets in problems:
           % (name, len(rows_mg), rows_mg[-1]["dofs"]))
     for c in columns:
         tol = TOL_MG_AMG[name][c]
-        worst = max(relative_difference(a, b, c) for a, b in zip(rows_mg, rows_amg))
+        worst = max((relative_difference(a, b, c) for a, b in zip(rows_mg, rows_amg)),
+                    default=math.inf)
         check(worst <= tol, "%s: %s equal with multigrid and AMG (max relative difference %.1e%s, "
               "allowed %.0e)" % (name, c, worst, " of ||u||" if c == "L2(u)" else "", tol))
         if len(rows_mg) >= 3:
@@ -162,8 +207,8 @@ for prm in ("cantilever/cantilever.prm", "l_shaped/l_shaped_adaptive.prm"):
     check("coarse matrix and AMG set-up" in open(os.path.join(out, "log.txt")).read(),
           "%s: coarse level solved by CG + AMG" % name)
     rows, rows_direct = table(out), table(os.path.abspath("output_mg_" + name))
-    worst = max(abs(a[c] - b[c]) / b[c] for a, b in zip(rows, rows_direct)
-                for c in ("L2(u)", "energy", "L2(stress)"))
+    worst = max((abs(a[c] - b[c]) / b[c] for a, b in zip(rows, rows_direct)
+                 for c in ("L2(u)", "energy", "L2(stress)")), default=math.inf)
     check(len(rows) == len(rows_direct) and worst <= TOL_COARSE_AMG[name],
           "%s: errors with the AMG coarse solve equal the direct one's (max relative difference %.1e, "
           "allowed %.0e)" % (name, worst, TOL_COARSE_AMG[name]))
@@ -182,15 +227,17 @@ for coarse in ("direct", "AMG"):
     outs[coarse] = os.path.abspath("output_flexure_coarse_" + coarse)
     run(flexure, outs[coarse], 1, flexure_sets + ["Solver/Multigrid coarse solver=" + coarse])
 rows, rows_direct = table(outs["AMG"]), table(outs["direct"])
-columns = [c for c in rows[0] if c.startswith(("u_", "s_"))]
-worst = max(abs(a[c] - b[c]) / max(abs(r[c]) for r in rows_direct)
-            for a, b in zip(rows, rows_direct) for c in columns)
-check(len(rows) == len(rows_direct) and worst <= TOL_FLEXURE_COARSE_AMG,
-      "flexure (%d coarse cells): point values with the AMG coarse solve equal the direct one's "
-      "(max relative difference %.1e, allowed %.0e)" % (rows[0]["cells"], worst, TOL_FLEXURE_COARSE_AMG))
+# The point-value columns: none (or no rows) would compare nothing.
+columns = [c for c in (rows[0] if rows else {}) if c.startswith(("u_", "s_"))]
+worst = max((abs(a[c] - b[c]) / max(abs(r[c]) for r in rows_direct)
+             for a, b in zip(rows, rows_direct) for c in columns), default=math.inf)
+check(len(rows) == len(rows_direct) == 3 and columns and worst <= TOL_FLEXURE_COARSE_AMG,
+      "flexure (%d coarse cells): %d point values in each of %d cycles with the AMG coarse solve "
+      "equal the direct one's (max relative difference %.1e, allowed %.0e)"
+      % (rows[0]["cells"] if rows else 0, len(columns), len(rows), worst, TOL_FLEXURE_COARSE_AMG))
 its = [n for _, _, n in iterations(outs["AMG"])]
 its_direct = [n for _, _, n in iterations(outs["direct"])]
-check(all(abs(a - b) <= 1 for a, b in zip(its, its_direct)),
+check(len(its) == len(its_direct) == 3 and all(abs(a - b) <= 1 for a, b in zip(its, its_direct)),
       "flexure: iterations with the AMG coarse solve %s, with the direct one %s" % (its, its_direct))
 
 # Global coarsening against local smoothing: the same errors (both solve to
@@ -202,9 +249,9 @@ check(all(abs(a - b) <= 1 for a, b in zip(its, its_direct)),
 # must stop the run before the mesh of cycle 18 (15 levels, about 13 GB),
 # with a clear error naming the way out, not let it be killed.
 GC = "Solver/Multigrid hierarchy=global coarsening"
-for name, prm, sets in (("cantilever", "cantilever/cantilever.prm", []),
-                        ("l_shaped", "l_shaped/l_shaped_adaptive.prm",
-                         ["Mesh refinement/Number of cycles=16"])):
+for name, prm, sets, cycles in (("cantilever", "cantilever/cantilever.prm", [], 6),
+                                ("l_shaped", "l_shaped/l_shaped_adaptive.prm",
+                                 ["Mesh refinement/Number of cycles=16"], 16)):
     rows_ls = table(os.path.abspath("output_mg_" + name))
     counts_ls = [n for _, _, n in iterations(os.path.abspath("output_mg_" + name))]
     for ranks in (1, 2):
@@ -212,18 +259,16 @@ for name, prm, sets in (("cantilever", "cantilever/cantilever.prm", []),
         run(prm, out, ranks, sets + [MG, GC, "Output/Write ParaView files=false"])
         rows = table(out)
         tol = TOL_GLOBAL_COARSENING[name]
-        worst = {c: max(relative_difference(a, b, c) for a, b in zip(rows, rows_ls))
-                 for c in tol}
-        check(len(rows) <= len(rows_ls) and all(a["dofs"] == b["dofs"] for a, b in zip(rows, rows_ls))
+        worst = {c: max((relative_difference(a, b, c) for a, b in zip(rows, rows_ls)),
+                        default=math.inf) for c in tol}
+        check(len(rows) == cycles and all(a["dofs"] == b["dofs"] for a, b in zip(rows, rows_ls))
               and all(worst[c] <= tol[c] for c in tol),
               "%s, %d rank(s): errors with global coarsening equal local smoothing's over %d cycles "
               "(max relative differences: L2(u) %.1e of ||u||, energy %.1e, L2(stress) %.1e; "
               "allowed %.0e, %.0e, %.0e)"
               % ((name, ranks, len(rows)) + tuple(worst[c] for c in tol) + tuple(tol.values())))
-        counts = [n for _, _, n in iterations(out)]
-        check(max(counts[1:]) - min(counts[1:]) <= 4,
-              "%s, %d rank(s): global-coarsening iterations %s (local smoothing %s) stay within +-2"
-              % (name, ranks, counts, counts_ls[:len(counts)]))
+        check_flat("%s, %d rank(s), global coarsening (local smoothing %s)"
+                   % (name, ranks, counts_ls[:len(rows)]), iterations(out), 1)
 out = os.path.abspath("output_gc_too_many_levels")
 result = run("l_shaped/l_shaped_adaptive.prm", out, 1,
              [MG, GC, "Output/Write ParaView files=false", "Resources/Memory limit=4 GB"],
@@ -250,10 +295,5 @@ for name, prm, sets, first in runs:
     out = os.path.abspath("output_mg_" + name) if not sets else os.path.abspath("output_iterations_" + name)
     if sets:
         run(prm, out, 1, sets + [MG])
-    counts = iterations(out)
-    its = [n for _, _, n in counts[first:]]
-    centre = 0.5 * (max(its) + min(its))
-    check(max(its) - min(its) <= 4,
-          "%s: multigrid iterations %s over %d to %d cells stay within +-2 of %g"
-          % (name, its, counts[first][0], counts[-1][0], centre))
+    check_flat(name, iterations(out), first)
 finish()

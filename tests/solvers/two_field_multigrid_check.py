@@ -25,7 +25,8 @@ matrix of a faulted model whose faults are constraints.
 3. tests/faults/viscoelastic_fault.prm with its fault locked: the
    visco-elastic time loop (its step sizes change the operator, the levels
    are kept while the mesh is) gives the direct solver's surface after
-   10 000 years to 1e-8, with the same steps.
+   10 000 years to 1e-8, with the same steps (their times to 1e-8
+   relative: the step lengths follow the solution).
 """
 import os
 import sys
@@ -88,8 +89,18 @@ def main():
     run(prm, "visco_direct", sets=LOCKED + DIRECT)
     steps_mg = read_csv(os.path.join("visco_mg", "time_steps.csv"))
     steps_direct = read_csv(os.path.join("visco_direct", "time_steps.csv"))
-    check(len(steps_mg) == len(steps_direct) and len(steps_mg) > 5,
-          "visco-elastic loop: %d and %d steps" % (len(steps_mg), len(steps_direct)))
+    # "The same steps": the step lengths follow the creep estimate of the
+    # solution (doubled or kept against the tolerance, rescaled by it after
+    # a rejection), and CG's solution differs from the direct one's by where
+    # it stops (1e-10 of the load; the surfaces to 1e-8, asserted below):
+    # the times are compared to that 1e-8 relative, not bit for bit.
+    time_worst = max([abs(a["time"] - b["time"]) / a["time"] for a, b in zip(steps_mg, steps_direct)],
+                     default=0.0)
+    check(len(steps_mg) == len(steps_direct) and len(steps_mg) > 5
+          and [a["step"] for a in steps_mg] == [b["step"] for b in steps_direct]
+          and time_worst <= 1e-8,
+          "visco-elastic loop: %d and %d steps, at the same times to %.1e relative (allowed 1e-8)"
+          % (len(steps_mg), len(steps_direct), time_worst))
     d = difference(surface("visco_mg"), surface("visco_direct"))
     check(d < 1e-8, "visco-elastic loop, locked fault, after 10 000 years: surface differs from "
           "the direct solve by %.2e of the largest displacement (< 1e-8)" % d)

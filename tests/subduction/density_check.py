@@ -20,7 +20,8 @@ After 5 Myr:
   its elastic value; measured 0.19: the lower crust, relaxing with
   eta/G = 0.93 Myr, still drives the mantle at 5 Myr) and the elastic upper crust's horizontal deviatoric
   tension grows (thesis: 22.5 -> 38 MPa).
-* The same answer on 1 and 2 ranks (1e-8 of the largest stress).
+* The same answer on 1 and 2 ranks (stresses to 1e-8 of the largest
+  stress, displacements to 1e-8 of the largest displacement).
 Goal-oriented refinement (the .prm file's cycles, elastic):
 * The cycles stop once the goals (right-edge crust, trench, outer rise)
   changed by < 1 % while the DoFs doubled, and the goals then agree with
@@ -85,11 +86,29 @@ check(abs(deviatoric_xx(relaxed)) < 0.5 * abs(deviatoric_xx(mantle)) and late_ma
       "horizontal deviatoric tension %.1f -> %.1f MPa (thesis 22.5 -> 38 MPa)"
       % (deviatoric_xx(mantle) / 1e6, deviatoric_xx(relaxed) / 1e6, early_max / 1e6, late_max / 1e6))
 
-scale = max(abs(r[k]) for r in rows for k in ("s_xx", "s_yy", "s_xy"))
-diff = max(abs(a[k] - b[k]) for a, b in zip(outs[1], outs[2]) for k in ("s_xx", "s_yy", "s_xy", "u_x", "u_y"))
-check(len(outs[1]) == len(outs[2]) and diff <= 1e-8 * scale,
-      "1 and 2 ranks agree at every point and time (largest difference %.1e of %.1f MPa)"
-      % (diff / scale, scale / 1e6))
+# Stresses relative to the largest stress, displacements to the largest
+# displacement: each in its own unit (compared with 1e-8 of the largest
+# stress in Pa, a displacement in m was allowed 1e-8 x 1.07e8 = 1.07 m of
+# its 269 m). The runs differ by where CG + AMG on 2 ranks stops
+# (Solver/Relative tolerance 1e-10 of the load) against the direct solve
+# on 1: 1e-8 leaves the condition number's amplification a factor 100
+# (measured 2.8e-10 for the stresses, 3.7e-11 for the displacements).
+STRESSES, DISPLACEMENTS = ("s_xx", "s_yy", "s_xy"), ("u_x", "u_y")
+
+
+def rank_difference(keys):
+    """(largest difference of @keys between 1 and 2 ranks, relative to the
+    largest |value| of @keys on 1 rank; that largest value)."""
+    largest = max(abs(r[k]) for r in rows for k in keys)
+    return max(abs(a[k] - b[k]) for a, b in zip(outs[1], outs[2]) for k in keys) / largest, largest
+
+
+stress_diff, stress_scale = rank_difference(STRESSES)
+u_diff, u_scale = rank_difference(DISPLACEMENTS)
+check(len(outs[1]) == len(outs[2]) > 0 and stress_diff <= 1e-8 and u_diff <= 1e-8,
+      "1 and 2 ranks agree at every point and time (%d rows): stresses to %.1e of the largest "
+      "%.1f MPa, displacements to %.1e of the largest %.3f m (allowed 1e-8 each)"
+      % (len(outs[2]), stress_diff, stress_scale / 1e6, u_diff, u_scale))
 
 # The .prm file's goal-oriented cycles (elastic): they stop once the goals
 # changed by < 1 % while the DoFs doubled, and then agree with the

@@ -34,7 +34,8 @@ Basal shear (§7.6.1):
   resultant of -9.11e11 N/m along x to 1e-9 (the shear starts 0.7 m from
   a vertex of the mesh, between quadrature points, so the quadrature is
   exact), carried by the edges' reactions.
-* No Griffith failure anywhere (thesis: "insufficient to cause failure").
+* No Griffith failure at any of the 4 x 96 points of the four profiles
+  (thesis: "insufficient to cause failure").
 * After 5 Myr the elastic upper crust at the right edge takes up more of
   the regional tension there (its mean sigma_xx rises by more than 2 MPa:
   stress amplification), while the continental mantle's deviatoric stress
@@ -88,13 +89,14 @@ def near(value, reference, scale=None):
     return abs(value - reference) <= max(0.025 * abs(reference), 0.01 * (scale or 0.0))
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from lithotest import SOURCE, check, finish, read_csv, run  # noqa: E402
+from lithotest import SOURCE, check, fail, finish, read_csv, run  # noqa: E402
 
 PRM_DIR = os.path.join(os.path.dirname(SOURCE), "prm")
 QUIET = ["Mesh refinement/Initial global refinement=0", "Mesh refinement/Number of cycles=1",
          "Output/Write ParaView files=false",
          "Output/Figures/Enabled=false", "Time stepping/Enabled=false",
          "Output/Stress-depth profiles=1, 659.7, 780, 919", "Output/Points per profile=96"]
+POINTS_PER_PROFILE = 96
 MPA = 1e-6
 
 
@@ -106,7 +108,16 @@ def experiment(prm, label, sets=(), ranks=1, elastic=True):
 
 
 def profile(out, x):
-    return read_csv(os.path.join(out, "stress_depth_x%g.csv" % x))
+    """The rows of a stress-depth profile; fails the test unless it has all
+    its points (Points per profile, from the top to the base): an empty
+    profile would make every check over its rows pass (no failed Griffith
+    point, no difference between ranks) or end in a traceback."""
+    path = os.path.join(out, "stress_depth_x%g.csv" % x)
+    rows = read_csv(path) if os.path.exists(path) else []
+    if len(rows) != POINTS_PER_PROFILE:
+        fail("%s: %d rows, %d expected (Output/Points per profile)"
+             % (path, len(rows), POINTS_PER_PROFILE))
+    return rows
 
 
 def band_mean(rows, key, top_km, bottom_km):
@@ -196,10 +207,10 @@ check(near(fall_crust * MPA, REFERENCE["coupling: fall in the crust"])
          REFERENCE["coupling: lid more tensional"]))
 fault = read_csv(os.path.join(weak[1], "fault.csv"))
 slip = [p["slip"] for p in fault]
-check(max(slip) < 0,
+check(slip and max(slip) < 0,
       "coupling: the slab slides down-dip beneath the overlying plate everywhere along the "
       "plate boundary (slip of the hanging wall, the overlying plate, %.1f to %.1f m: up-dip)"
-      % (min(slip), max(slip)))
+      % (min(slip, default=math.nan), max(slip, default=math.nan)))
 largest, difference = 0.0, 0.0
 for x in (1, 659.7, 780, 919):
     a, b = profile(weak[1], x), profile(weak[2], x)
@@ -246,8 +257,11 @@ check(abs(traction["F_x"] - applied) < 1e-9 * abs(applied) and abs(reactions + t
       < 1e-6 * abs(applied),
       "basal shear: resultant %.4e N/m along x (3.5 MPa over %.1f km: %.4e), balanced by the "
       "edges (%.4e)" % (traction["F_x"], (920e3 - base_of_fault) / 1e3, applied, reactions))
-failed = [r for x in (1, 659.7, 780, 919) for r in profile(shear, x) if r["griffith_C"] <= 0]
-check(not failed, "basal shear: no Griffith failure on the four profiles")
+tested = [r for x in (1, 659.7, 780, 919) for r in profile(shear, x)]
+failed = [r for r in tested if r["griffith_C"] <= 0]
+check(len(tested) == 4 * POINTS_PER_PROFILE and not failed,
+      "basal shear: no Griffith failure at the %d points of the four profiles (%d failed)"
+      % (len(tested), len(failed)))
 relaxed = experiment("subduction_basal_shear.prm", "basal_shear_5Myr", elastic=False)
 force_before = band_mean(profile(shear, 919), "sigma_xx", 0, 10)
 force_after = band_mean(profile(relaxed, 919), "sigma_xx", 0, 10)

@@ -88,7 +88,11 @@ check(throws[0] < throws[1] < throws[2] and depths[0] < depths[1] < depths[2]
       "layer at 50 MPa)" % (", ".join("%.2f" % t for t in throws), ", ".join("%.2f" % d for d in depths)))
 check(all(listric[load]["throw_m"] < plane[load]["throw_m"] for load in (40, 50)),
       "6.2.2: the listric throw is less than the plane fault's at 40 and 50 MPa (%.1f < %.1f m, "
-      "%.1f < %.1f m; at 30 MPa %.2f against %.2f m)"
-      % (throws[1], plane[40]["throw_m"], throws[2], plane[50]["throw_m"], throws[0],
-         plane[30]["throw_m"]))
+      "%.1f < %.1f m)" % (throws[1], plane[40]["throw_m"], throws[2], plane[50]["throw_m"]))
+# At 30 MPa the thesis's "consistently less" does not hold here and nothing
+# gives the difference a reference value (doc/thesis_comparison.md): it is
+# printed as information, not asserted.
+print("info 6.2.2: at 30 MPa the listric throw %.2f m against the plane fault's %.2f m (%+.1f %%; "
+      "the thesis says consistently less; no reference, not asserted)"
+      % (throws[0], plane[30]["throw_m"], 100 * (throws[0] / plane[30]["throw_m"] - 1)))
 finish()
