@@ -1,9 +1,11 @@
 // The fault zone's correction of the two fields' multigrid
 // (FaultZoneCorrection, doc/faults.md "Preconditioners") on the 5-point
-// Laplacian of a 30 × 30 grid, whose column 15 stands for a fault and is
-// the seed, grown by 2 layers (columns 13 to 17):
-// - the zone is those 150 rows, each rank owning its own (the layers grow
-//   across the ranks' boundary);
+// Laplacian of a 30 × 30 grid, whose grid row 15 stands for a fault and is
+// the seed, grown by 2 layers (grid rows 13 to 17):
+// - the zone is those 150 unknowns, each rank owning its own: the ranks own
+//   whole grid rows, so on 2 ranks the seed lies on rank 1 (grid rows 15 to
+//   29) and the layers grow across the ranks' boundary into rank 0's grid
+//   rows 13 and 14, which hold no seed (asserted);
 // - after x ← x + R_zᵀ A_zz⁻¹ R_z (b − A x) the residual vanishes on the
 //   zone, on every rank (each holds the whole zone's A_zz), to 1e-12 of
 //   |b| (an exact solve of 150 unknowns whose condition number is below
@@ -38,7 +40,7 @@ using namespace lithostress;
 
 namespace
 {
-  constexpr unsigned int n = 30, fault_column = 15, layers = 2;
+  constexpr unsigned int n = 30, fault_row = 15, layers = 2;
   using TrilinosVector = TrilinosWrappers::MPI::Vector;
 
   unsigned int failed = 0;
@@ -129,9 +131,9 @@ main(int argc, char **argv)
   std::vector<unsigned int> seeds;
   const auto                first = *owned.begin();
   for (const auto row : owned)
-    if (row % n == fault_column)
+    if (row / n == fault_row)
       seeds.push_back(row - first);
-  // The zone is 2 layers + 1 of the n columns: made under a largest
+  // The zone is 2 layers + 1 of the n grid rows: made under a largest
   // fraction just above that, not made under one just below.
   const double        zone_fraction = (2. * layers + 1) / n;
   FaultZoneCorrection zone;
@@ -142,17 +144,24 @@ main(int argc, char **argv)
           Utilities::MPI::sum(too_large.size(), MPI_COMM_WORLD) == 0,
         "no zone where it would hold more than the largest fraction");
   const auto in_zone = [](const types::global_dof_index row) {
-    const unsigned int j = row % n;
-    return j + layers >= fault_column && j <= fault_column + layers;
+    const unsigned int i = row / n;
+    return i + layers >= fault_row && i <= fault_row + layers;
   };
   unsigned int expected = 0;
   for (const auto row : owned)
     expected += in_zone(row) ? 1 : 0;
   check(Utilities::MPI::sum(zone.size() == expected ? 0 : 1, MPI_COMM_WORLD) ==
           0,
-        "the zone is this rank's rows within 2 layers of the seed column (" +
+        "the zone is this rank's unknowns within 2 layers of the seed row (" +
           std::to_string(zone.size()) + " here, " + std::to_string(expected) +
           " expected)");
+  // On several ranks a rank without a seed holds part of the zone: the
+  // layers crossed the ranks' boundary.
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    check(Utilities::MPI::sum(seeds.empty() && zone.size() > 0 ? 1 : 0,
+                              MPI_COMM_WORLD) >= 1,
+          "the layers grow across the ranks' boundary onto a rank with no "
+          "seed");
   std::mt19937   random(7);
   TrilinosVector b(owned, MPI_COMM_WORLD), x(b), r(b);
   fill_random(b, random);
