@@ -179,6 +179,24 @@ namespace lithostress
                         "beside each (" +
                           std::to_string(faults.size() + 1) + ")");
     check_faults_apart(scale);
+    // A graded coarse mesh is counted before it is made: p4est holds a
+    // tree per coarse cell.
+    if (fault_cell_size > 0)
+      {
+        std::size_t columns = 0;
+        for (const auto &region : column_fractions())
+          columns += region.size() - 1;
+        const std::size_t cells = columns * (rows.size() - 1);
+        if (cells > max_coarse_cells)
+          throw_input_error(where + "Fault cell size",
+                            "the graded coarse mesh would have " +
+                              std::to_string(rows.size() - 1) + " rows of " +
+                              std::to_string(columns) + " cells (" +
+                              std::to_string(cells) + "), more than " +
+                              std::to_string(max_coarse_cells) +
+                              ": give a larger Fault cell size or Cell size "
+                              "growth");
+      }
   }
 
   template <int dim>

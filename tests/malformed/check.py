@@ -88,6 +88,7 @@ expected = {
     "faults_cross": "Geometry/Layered box/Fault surface x>: the faults <b> and <a> meet or cross in the box (at y = -1.99",
     "gmsh_fault_extension_blocked": "Geometry/Gmsh/Fault curves>: the physical curve <fault>'s lower end at (1 -1) lies inside the mesh, and the mesh has no edges that continue the fault to the boundary",
     "fault_cell_size_too_small": "Geometry/Layered box/Fault cell size>: is less than 1e-6 of the Width",
+    "fault_cell_size_too_many_cells": "Geometry/Layered box/Fault cell size>: the graded coarse mesh would have 50000 rows of 38 cells",
     "cell_size_growth_one": "Geometry/Layered box/Cell size growth>: must lie in (1, 4], got 1",
     "displacement_goal_stress_component": "Mesh refinement/Goals/Displacement averages>: goal `crust`: unknown component `sigma_xx` (u_x, u_y)",
     "fault_tip_off_row": "Geometry/Layered box/Fault top depth>: the end of the fault <fault> at the depth 3.300000 must be a row of the coarse mesh",

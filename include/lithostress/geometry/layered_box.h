@@ -116,6 +116,9 @@ namespace lithostress
     /** `Fault cell size` [m] (0: cells divided evenly) and `Cell size
      * growth` of the graded coarse mesh. */
     double fault_cell_size = 0, cell_size_growth = 1.5;
+    /** The most cells a graded coarse mesh may have (a p4est tree each,
+     * about a kilobyte; refinement gives the fine meshes). */
+    static constexpr std::size_t max_coarse_cells = 1000000;
     /** The coarse mesh's rows of vertices, from the base up (set_rows). */
     std::vector<double> rows;
     /** The faults through the box (`Fault surface x`), left to right:
