@@ -577,17 +577,24 @@ namespace lithostress
                 current      = cell;
                 const auto u = fe_space.displacement(
                   fe_space.field_of(cell->active_fe_index()));
-                grads.resize(fv.n_quadrature_points);
-                fv[u].get_function_gradients(solution, grads);
-                displacements.resize(fv.n_quadrature_points);
-                fv[u].get_function_values(solution, displacements);
+                // Only what the goal needs: the values for a displacement,
+                // the gradients for a stress.
+                if (is_displacement(goals[k].component))
+                  {
+                    displacements.resize(fv.n_quadrature_points);
+                    fv[u].get_function_values(solution, displacements);
+                  }
+                else
+                  {
+                    grads.resize(fv.n_quadrature_points);
+                    fv[u].get_function_gradients(solution, grads);
+                  }
               }
             sums[1] += fv.JxW(q);
             if (is_displacement(goals[k].component))
               {
                 sums[0] +=
-                  displacements[q]
-                               [goals[k].component == Component::u_x ? 0 : 1] *
+                  displacements[q][displacement_index(goals[k].component)] *
                   fv.JxW(q);
                 return;
               }
@@ -626,7 +633,7 @@ namespace lithostress
             if (is_displacement(goals[k].component))
               {
                 sums[0] += reference.displacement(fv.quadrature_point(
-                             q))[goals[k].component == Component::u_x ? 0 : 1] *
+                             q))[displacement_index(goals[k].component)] *
                            fv.JxW(q);
                 return;
               }
@@ -684,7 +691,7 @@ namespace lithostress
           fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
         if (is_displacement(goals[k].component))
           {
-            const unsigned int c = goals[k].component == Component::u_x ? 0 : 1;
+            const unsigned int c = displacement_index(goals[k].component);
             for (unsigned int i = 0; i < fv.get_fe().n_dofs_per_cell(); ++i)
               local(i) += fv[u].value(i, q)[c] * fv.JxW(q) / region;
             return;

@@ -72,6 +72,13 @@ namespace lithostress
       return component == Component::u_x || component == Component::u_y;
     }
 
+    /** The vector index (0 for x, 1 for y) of a displacement component. */
+    static unsigned int
+    displacement_index(const Component component)
+    {
+      return component == Component::u_x ? 0 : 1;
+    }
+
     /** One regional mean. */
     struct Goal
     {
