@@ -155,18 +155,14 @@ namespace lithostress
       const double seconds = timer.wall_time();
       time_solve += seconds;
       // The iterations beyond the first solve's are the price of keeping
-      // the preconditioner; once they cost more than making it, it is made
-      // again. (The ILU smoothing of the spring is made for each tangent.)
+      // the preconditioner; once they outnumber what making it costs in
+      // iterations, it is made again. (The ILU smoothing of the spring is
+      // made for each tangent.)
       if (first_iterations == numbers::invalid_unsigned_int)
         first_iterations = last_iterations;
-      stale_cost +=
-        seconds *
-        (last_iterations - std::min(last_iterations, first_iterations)) /
-        (last_iterations + 1.);
-      // (Decided on rank 0's clock: every rank must make it again or none.)
-      if (Utilities::MPI::broadcast(communicator,
-                                    stale_cost > preconditioner_cost) ||
-          (!contact && !direct))
+      stale_iterations +=
+        last_iterations - std::min(last_iterations, first_iterations);
+      if (stale_iterations > setup_iterations || (!contact && !direct))
         preconditioner_current = false;
       if (may_hand_over)
         hand_over_if_slow();

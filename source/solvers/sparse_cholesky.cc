@@ -41,6 +41,10 @@ namespace lithostress
     SuiteSparse_long n      = 0;
     /** A hash of the sparsity the factor's ordering was made for. */
     std::size_t structure = 0;
+    /** CHOLMOD's flop count of one factorisation and the non-zeros of
+     * the factor (from the symbolic analysis), and those of the whole
+     * symmetric matrix. */
+    double flops = 0, factor_nonzeros = 0, matrix_nonzeros = 0;
   };
 
   SparseCholesky::SparseCholesky()
@@ -151,8 +155,13 @@ namespace lithostress
       cholmod_l_free_factor(&data->factor, &data->common);
     data->structure = structure;
     if (!data->factor)
-      data->factor = cholmod_l_analyze(csc, &data->common);
-    data->n = n;
+      {
+        data->factor          = cholmod_l_analyze(csc, &data->common);
+        data->flops           = data->common.fl;
+        data->factor_nonzeros = data->common.lnz;
+      }
+    data->n               = n;
+    data->matrix_nonzeros = 2. * nnz - n;
     const bool done =
       data->factor && cholmod_l_factorize(csc, data->factor, &data->common);
     cholmod_l_free_sparse(&csc, &data->common);
@@ -197,6 +206,16 @@ namespace lithostress
     const double *values = static_cast<const double *>(solution->x);
     std::copy(values, values + data->n, x_values);
     cholmod_l_free_dense(&solution, &data->common);
+  }
+
+  double
+  SparseCholesky::factorization_in_solves() const
+  {
+    // A solve is a forward and a backward substitution, 2 nnz(L) flops
+    // each; the product by the matrix 2 nnz(A).
+    const double per_solve =
+      4. * data->factor_nonzeros + 2. * data->matrix_nonzeros;
+    return per_solve > 0 ? data->flops / per_solve : 0;
   }
 
   double

@@ -80,13 +80,16 @@ namespace lithostress
     /** Whether the preconditioner is kept for the next solve. The
      * tangent and the active constraints change only at the fault's
      * points, a change of low rank for a Krylov method: a preconditioner
-     * is kept until the iterations it has cost beyond those of its first
-     * solve took longer than making it (preconditioner_cost). */
+     * is kept until the iterations its solves have taken beyond those of
+     * its first solve outnumber what making it costs, counted in the same
+     * iterations (SlidingContext::set_up_in_iterations()). Counts, not
+     * clocks: every run, build and rank decides alike. */
     bool preconditioner_current = false;
-    /** The wall time of making the preconditioner, the time its
-     * iterations beyond those of its first solve have taken since, and
-     * the iterations of that first solve. */
-    double        preconditioner_cost = 0, stale_cost = 0;
+    /** What making the kept preconditioner cost in iterations of its
+     * Krylov solves, the iterations beyond those of its first solve since
+     * it was made, and the iterations of that first solve. */
+    double        setup_iterations = 0;
+    unsigned int  stale_iterations = 0;
     unsigned int  first_iterations = numbers::invalid_unsigned_int;
     SolverControl factorization_control;
     std::unique_ptr<TrilinosWrappers::SolverDirect> factorization;
@@ -485,8 +488,8 @@ namespace lithostress
       bool                        &assembled          = kept.assembled;
       unsigned int                &assembled_version  = kept.assembled_version;
       bool          &preconditioner_current = kept.preconditioner_current;
-      double        &preconditioner_cost    = kept.preconditioner_cost;
-      double        &stale_cost             = kept.stale_cost;
+      double        &setup_iterations       = kept.setup_iterations;
+      unsigned int  &stale_iterations       = kept.stale_iterations;
       unsigned int  &first_iterations       = kept.first_iterations;
       SolverControl &factorization_control  = kept.factorization_control;
       std::unique_ptr<TrilinosWrappers::SolverDirect> &factorization =
@@ -498,6 +501,15 @@ namespace lithostress
        * or the AMG, built afresh if it is not current. */
       void
       set_up_preconditioner();
+
+      /** What making the preconditioner now held costs in iterations of
+       * its Krylov solve: for the Cholesky factor a multiple of its flops
+       * over a CG iteration's (SparseCholesky::factorization_in_solves()),
+       * for the AMG, the two fields' multigrid and the LU factorisation of
+       * several ranks a measured ratio (doc/faults.md, "Preconditioners").
+       * A count, so that every run, build and rank decides alike. */
+      double
+      set_up_in_iterations() const;
 
       /** `automatic` (may_hand_over): the factorisation from the next
        * solve on if the multigrid's second solve on this operator took

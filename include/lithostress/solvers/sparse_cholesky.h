@@ -56,6 +56,14 @@ namespace lithostress
     vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src) const;
 
+    /** The floating-point operations of one factorisation over those of
+     * one preconditioned CG iteration with it (a solve with the factor,
+     * 4 nnz(L), and a product by the matrix, 2 nnz(A)): a count from the
+     * matrix's structure (CHOLMOD's symbolic analysis), the same on
+     * every run. 0 before the first factorisation. */
+    double
+    factorization_in_solves() const;
+
     /** Bytes of the factor. */
     double
     memory_consumption() const;
