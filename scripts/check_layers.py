@@ -7,7 +7,7 @@ import os
 import re
 import sys
 
-LAYERS = ["base", "geometry", "materials", "reference_solutions",
+LAYERS = ["base", "geometry", "temperature", "materials", "reference_solutions",
           "discretization", "loads", "boundary_conditions", "assembly",
           "solvers", "faults", "analysis", "refinement",
           "time_integration", "postprocessors", "simulator"]

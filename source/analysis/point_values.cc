@@ -3,8 +3,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/cell_id.h>
 
-#include <lithostress/base/input_error.h>
 #include <lithostress/analysis/point_values.h>
+#include <lithostress/base/input_error.h>
 
 #include <cmath>
 
@@ -20,10 +20,12 @@ namespace lithostress
                      const bool                           allow_outside)
   {
     std::vector<bool> inside(points.size(), true);
-    // u, σ (dim × dim) and σzz per point; only the winning rank fills them.
-    const unsigned int  n_values = dim + dim * dim + 2;
-    std::vector<double> local(points.size() * n_values, 0.0);
-    const MPI_Comm      comm = dof_handler.get_communicator();
+    // u, σ (dim × dim), σzz, the material and the temperature per point;
+    // only the winning rank fills them.
+    const unsigned int           n_values    = dim + dim * dim + 3;
+    const TemperatureModel<dim> *temperature = stress_model.temperature_model();
+    std::vector<double>          local(points.size() * n_values, 0.0);
+    const MPI_Comm               comm = dof_handler.get_communicator();
     // The owned cells with their bounding boxes, widened by a tenth of the
     // diameter for curved cells, in iteration order.
     std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator,
@@ -117,6 +119,12 @@ namespace lithostress
                 v[dim + a * dim + b] = stress.in_plane[a][b];
             v[dim + dim * dim]     = stress.zz;
             v[dim + dim * dim + 1] = cell->material_id();
+            if (temperature != nullptr)
+              {
+                std::vector<double> t;
+                temperature->values(cell, {fe_values.quadrature_point(0)}, t);
+                v[dim + dim * dim + 2] = t[0];
+              }
           }
         catch (const InputError &)
           {
@@ -141,6 +149,8 @@ namespace lithostress
         result[k].sigma_zz = v[dim + dim * dim];
         result[k].material_id =
           static_cast<types::material_id>(std::lround(v[dim + dim * dim + 1]));
+        if (temperature != nullptr)
+          result[k].temperature = v[dim + dim * dim + 2];
       }
     return result;
   }

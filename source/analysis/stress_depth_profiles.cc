@@ -1,6 +1,6 @@
+#include <lithostress/analysis/stress_depth_profiles.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
-#include <lithostress/analysis/stress_depth_profiles.h>
 
 #include <deal.II/grid/grid_tools.h>
 
@@ -20,7 +20,8 @@ namespace lithostress
                       "which stresses are written after the last cycle, "
                       "`x1, x2, ...`: stress_depth_x<x>.csv with depth, "
                       "displacement, stresses, principal and deviatoric "
-                      "stresses and the Griffith test (m, Pa).");
+                      "stresses and the Griffith test (m, Pa), and the "
+                      "temperature [K] where Temperature/Model gives one.");
     prm.declare_entry("Points per profile",
                       "101",
                       Patterns::Integer(2),

@@ -36,6 +36,8 @@ namespace lithostress
     names.emplace_back("griffith_degree_of_failure");
     names.emplace_back("griffith_regime");
     names.emplace_back("griffith_fracture_angle");
+    if (stress_model.temperature_model() != nullptr)
+      names.emplace_back("temperature");
     return names;
   }
 
@@ -52,6 +54,8 @@ namespace lithostress
     for (unsigned int d = 0; d < dim; ++d)
       i.push_back(DataComponentInterpretation::component_is_part_of_vector);
     for (unsigned int k = 0; k < 7; ++k)
+      i.push_back(DataComponentInterpretation::component_is_scalar);
+    if (stress_model.temperature_model() != nullptr)
       i.push_back(DataComponentInterpretation::component_is_scalar);
     return i;
   }
@@ -71,6 +75,10 @@ namespace lithostress
   {
     const auto      cell     = inputs.template get_cell<dim>();
     const Material &material = stress_model.materials(cell->material_id());
+    const TemperatureModel<dim> *temperature = stress_model.temperature_model();
+    std::vector<double>          temperatures;
+    if (temperature != nullptr)
+      temperature->values(cell, inputs.evaluation_points, temperatures);
     for (unsigned int q = 0; q < computed.size(); ++q)
       {
         Tensor<1, dim> u;
@@ -112,6 +120,8 @@ namespace lithostress
         computed[q][k++] = a.degree_of_failure;
         computed[q][k++] = a.regime;
         computed[q][k++] = a.fracture_angle;
+        if (temperature != nullptr)
+          computed[q][k++] = temperatures[q];
       }
   }
 

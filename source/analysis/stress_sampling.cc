@@ -1,7 +1,8 @@
+#include <lithostress/analysis/stress_sampling.h>
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/output_file.h>
-#include <lithostress/analysis/stress_sampling.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <fstream>
@@ -45,11 +46,17 @@ namespace lithostress
                        const std::vector<StressSample<dim>> &samples,
                        const std::optional<double>           surface_y)
   {
+    // The temperature is known at every sample or at none.
+    const bool with_temperature =
+      std::any_of(samples.begin(), samples.end(), [](const auto &sample) {
+        return sample.value.inside && !std::isnan(sample.value.temperature);
+      });
     OutputFile out(file_name);
     out << "x,y," << (surface_y ? "depth," : "")
         << "u_x,u_y,sigma_xx,sigma_yy,sigma_xy,sigma_zz,sigma_1,sigma_2,"
            "angle_1,deviatoric_xx,deviatoric_yy,deviatoric_zz,deviatoric_xy,"
-           "griffith_C,griffith_regime,fracture_angle\n"
+           "griffith_C,griffith_regime,fracture_angle"
+        << (with_temperature ? ",temperature\n" : "\n")
         << std::setprecision(10);
     for (const StressSample<dim> &sample : samples)
       if (sample.value.inside)
@@ -70,7 +77,10 @@ namespace lithostress
           // strength): an empty field, as every number is finite.
           if (std::isfinite(a.degree_of_failure))
             out << a.degree_of_failure;
-          out << ',' << a.regime << ',' << a.fracture_angle << '\n';
+          out << ',' << a.regime << ',' << a.fracture_angle;
+          if (with_temperature)
+            out << ',' << v.temperature;
+          out << '\n';
         }
     out.commit();
   }

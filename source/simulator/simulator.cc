@@ -50,6 +50,7 @@ namespace lithostress
                       "false = new vertices on straight lines (for tests).");
     prm.leave_subsection();
     GeometrySelector<dim>::declare_parameters(prm);
+    TemperatureSelector<dim>::declare_parameters(prm);
     MaterialLibrary::declare_parameters(prm, first_pass);
     PrescribedDisplacement<dim>::declare_parameters(prm, first_pass);
     FaultInterface<dim>::declare_parameters(prm, first_pass);
@@ -224,6 +225,10 @@ namespace lithostress
                                                       materials,
                                                       plane_state,
                                                       initial_stresses);
+    temperature  = TemperatureSelector<dim>::create(prm, length_scale);
+    if (temperature)
+      temperature->check_against_mesh(triangulation);
+    stress_model->attach_temperature(temperature.get());
     prescribed_displacement.parse_parameters(prm, model);
     griffith.parse_parameters(prm, model.gravity);
     griffith.resolve_lithostatic_pressure(loads.without_body_force() ||

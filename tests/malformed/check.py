@@ -70,6 +70,8 @@ expected = {
     "renamed_entry_after_error": "The entry value abc for the entry named Poisson's ratio does not match the given pattern",
     "renamed_gravity_entry": "renamed_gravity_entry.prm:70: the entry <Loads/Gravity/Acceleration> has moved to <Gravity field/Acceleration> (since 2026-11-26, 2c42bf2)",
     "end_time_zero": "Time stepping/End time",
+    "plate_age_negative": "Temperature/Plate cooling/Plate age",
+    "temperature_below_zero": "Temperature/Function/Expression",
     "output_time_after_end": "Time stepping/Output times>: the time 4000 years is outside [0, End time]",
     "resume_without_checkpoint": "Time stepping/Resume>: there is no checkpoint",
     "resume_other_model": "checkpoint-000007 belongs to another model",

@@ -8,6 +8,7 @@
 #include <lithostress/discretization/finite_element_space.h>
 #include <lithostress/materials/stress_model.h>
 
+#include <limits>
 #include <vector>
 
 namespace lithostress
@@ -22,6 +23,9 @@ namespace lithostress
     double                  sigma_zz = 0;
     /** The material of the evaluating cell. */
     types::material_id material_id = 0;
+    /** The temperature [K] (`Temperature/Model`); NaN where the model has
+     * none. */
+    double temperature = std::numeric_limits<double>::quiet_NaN();
     /** Whether the point lies in the mesh (only false when outside points
      * are allowed). */
     bool inside = true;

@@ -39,8 +39,9 @@ namespace lithostress
    * Write the samples inside the body as CSV (SI units: m, Pa, degrees):
    * `x, y, [depth,] u_x, u_y, sigma_xx, sigma_yy, sigma_xy, sigma_zz,
    * sigma_1, sigma_2, angle_1, deviatoric_xx, deviatoric_yy, deviatoric_zz,
-   * deviatoric_xy, griffith_C, griffith_regime, fracture_angle`; the depth
-   * column (below @p surface_y) only when it is given. angle_1 is the
+   * deviatoric_xy, griffith_C, griffith_regime, fracture_angle[,
+   * temperature]`; the depth column (below @p surface_y) only when it is
+   * given, the temperature [K] only where the model has one. angle_1 is the
    * direction of σ1 from the x axis; griffith_C is 1 and the regime −1 where
    * the material is not tested (T = 0).
    */

@@ -10,6 +10,7 @@
 #include <lithostress/materials/initial_stress_source.h>
 #include <lithostress/materials/material.h>
 #include <lithostress/materials/rheology.h>
+#include <lithostress/temperature/temperature_model.h>
 
 #include <map>
 #include <memory>
@@ -187,6 +188,22 @@ namespace lithostress
       return step_length;
     }
 
+    /** Give the model the section's temperature (`Temperature/Model`;
+     * null: none), owned by the caller, for the laws and the output that
+     * read it. */
+    void
+    attach_temperature(const TemperatureModel<dim> *model)
+    {
+      temperature = model;
+    }
+
+    /** The temperature attached, or null where the model has none. */
+    const TemperatureModel<dim> *
+    temperature_model() const
+    {
+      return temperature;
+    }
+
     /** Changes whenever set_time_step() changes the step moduli. */
     unsigned long long
     moduli_version() const
@@ -234,6 +251,7 @@ namespace lithostress
     std::vector<double>                           zero_history;
     std::vector<const InitialStressSource<dim> *> initial_stress_loads;
     const CellHistory<dim>                       *cell_history = nullptr;
+    const TemperatureModel<dim>                  *temperature  = nullptr;
     double             step_length = 0, step_theta = 1;
     unsigned long long version = 0;
   };

@@ -22,6 +22,7 @@
 #include <lithostress/reference_solutions/reference_solution.h>
 #include <lithostress/simulator/elastic_problem.h>
 #include <lithostress/simulator/refinement_cycles.h>
+#include <lithostress/temperature/temperature_model.h>
 #include <lithostress/time_integration/creep_integrator.h>
 #include <lithostress/time_integration/time_stepping.h>
 
@@ -131,10 +132,12 @@ namespace lithostress
     ModelDescription<dim>                     model;
     LoadCollection<dim>                       loads;
     PrescribedDisplacement<dim>               prescribed_displacement;
-    std::unique_ptr<StressModel<dim>>         stress_model;
-    GriffithFailure                           griffith;
-    MemoryBudget                              memory_budget;
-    TimeStepping                              time_stepping;
+    /** `Temperature` (null: none); the stress model reads it. */
+    std::unique_ptr<TemperatureModel<dim>> temperature;
+    std::unique_ptr<StressModel<dim>>      stress_model;
+    GriffithFailure                        griffith;
+    MemoryBudget                           memory_budget;
+    TimeStepping                           time_stepping;
     /** The creep history (only if the time loop runs). */
     std::unique_ptr<CreepIntegrator<dim>> creep;
     RefinementCycles<dim>                 cycles;
