@@ -170,6 +170,45 @@ def check_settled_newton(label, solves, reduction=1e-2, floor=1e-11):
              reduction, floor))
 
 
+def step_newton_residuals(log_text):
+    """The relative residuals of each time step's Newton iteration (a
+    non-linear rheology), from the log's "relative residuals a, b, ..."
+    lists. Fails the test if the log has none."""
+    import re
+    steps = [[float(x) for x in m.group(1).split(", ")]
+             for m in re.finditer(r"Newton iterations \(relative residuals ([^)]*)\)", log_text)]
+    if not steps:
+        fail("the log has no Newton residuals of a time step")
+    return steps
+
+
+def check_quadratic_newton(label, steps, noise=1e-7, floor=1e-11, order=1.7, most=8):
+    """Newton's method converges quadratically: for each step of @steps
+    (step_newton_residuals) the order estimate log(r_k+1/r_k)/log(r_k/r_k-1)
+    of its triples r_k-1, r_k, r_k+1 clear of the linear solves' accuracy
+    (r_k > @noise, r_k+1 > @floor, where the residual stops falling) reaches
+    @order at least once (a linearly converging iteration gives about 1
+    throughout, the secant method 1.62, Newton's method 2 once it is close,
+    lower before); every step with such a triple is counted, and there must
+    be one. Every step takes at most @most iterations."""
+    import math
+    orders = []
+    for r in steps:
+        estimates = [math.log(c / b) / math.log(b / a)
+                     for a, b, c in zip(r, r[1:], r[2:]) if b > noise and c > floor]
+        if estimates:
+            orders.append(max(estimates))
+    longest = max(steps, key=len)
+    check(max(len(r) for r in steps) <= most,
+          "%s: %d steps, at most %d Newton iterations each (at most %d)"
+          % (label, len(steps), len(longest), most))
+    check(len(orders) > 0 and min(orders) >= order,
+          "%s: quadratic convergence, each step's best order estimate %.2f to %.2f over %d steps "
+          "(at least %g; e.g. %s)"
+          % (label, min(orders or [0]), max(orders or [0]), len(orders), order,
+             ", ".join("%.1e" % x for x in longest)))
+
+
 def check(condition, message):
     status = "ok  " if condition else "FAIL"
     print("%s %s" % (status, message))

@@ -22,6 +22,15 @@ namespace lithostress
                       "displacement, stresses, principal and deviatoric "
                       "stresses and the Griffith test (m, Pa), and the "
                       "temperature [K] where Temperature/Model gives one.");
+    prm.declare_entry("Strength envelope strain rate",
+                      "1e-15",
+                      Patterns::Double(0),
+                      "The strain rate [1/s] of the strength envelope in "
+                      "the stress-depth profiles of rocks that yield or "
+                      "creep (Rheology = visco-elasto-plastic): columns "
+                      "tau_II, strength_brittle, strength_ductile and their "
+                      "minimum, strength (Pa; empty where a rock has no "
+                      "such branch); 0: none.");
     prm.declare_entry("Points per profile",
                       "101",
                       Patterns::Integer(2),
@@ -45,7 +54,8 @@ namespace lithostress
                             length_scale);
         labels.push_back("x" + x);
       }
-    n_points = prm.get_integer("Points per profile");
+    n_points             = prm.get_integer("Points per profile");
+    envelope_strain_rate = prm.get_double("Strength envelope strain rate");
     prm.leave_subsection();
   }
 
@@ -147,13 +157,15 @@ namespace lithostress
             points[k][0]       = positions[l];
             points[k][dim - 1] = y_top - (y_top - y_base) * k / (n_points - 1);
           }
-        const auto samples = sample_stresses(dof_handler,
-                                             fe_space,
-                                             stress_model,
-                                             griffith,
-                                             solution,
-                                             points,
-                                             true);
+        auto samples = sample_stresses(dof_handler,
+                                       fe_space,
+                                       stress_model,
+                                       griffith,
+                                       solution,
+                                       points,
+                                       true);
+        if (envelope_strain_rate > 0)
+          add_strength_envelope(samples, stress_model, envelope_strain_rate);
         on_all_ranks(comm, [&]() {
           if (Utilities::MPI::this_mpi_process(comm) == 0)
             write_stress_samples(directory + "/stress_depth_" + labels[l] +

@@ -42,6 +42,34 @@ namespace lithostress
 
   template <int dim>
   void
+  add_strength_envelope(std::vector<StressSample<dim>> &samples,
+                        const StressModel<dim>         &stress_model,
+                        const double                    strain_rate)
+  {
+    for (StressSample<dim> &sample : samples)
+      {
+        const PointValue<dim> &v = sample.value;
+        if (!v.inside)
+          continue;
+        const double mean = (v.stress[0][0] + v.stress[1][1] + v.sigma_zz) / 3;
+        const StrengthEnvelope envelope =
+          stress_model.rheology(v.material_id)
+            .strength_envelope(std::isnan(v.temperature) ? 0.0 : v.temperature,
+                               -mean,
+                               strain_rate);
+        if (std::isinf(envelope.brittle) && std::isinf(envelope.ductile))
+          continue;
+        const double dxx = v.stress[0][0] - mean, dyy = v.stress[1][1] - mean,
+                     dzz = v.sigma_zz - mean;
+        sample.tau_ii    = std::sqrt(0.5 * (dxx * dxx + dyy * dyy + dzz * dzz) +
+                                  v.stress[0][1] * v.stress[0][1]);
+        sample.brittle_strength = envelope.brittle;
+        sample.ductile_strength = envelope.ductile;
+      }
+  }
+
+  template <int dim>
+  void
   write_stress_samples(const std::string                    &file_name,
                        const std::vector<StressSample<dim>> &samples,
                        const std::optional<double>           surface_y)
@@ -51,12 +79,24 @@ namespace lithostress
       std::any_of(samples.begin(), samples.end(), [](const auto &sample) {
         return sample.value.inside && !std::isnan(sample.value.temperature);
       });
+    const bool with_strength =
+      std::any_of(samples.begin(), samples.end(), [](const auto &sample) {
+        return !std::isnan(sample.tau_ii);
+      });
+    // An infinite strength (no such branch) is an empty field.
+    const auto strength = [](std::ostream &out, const double value) {
+      if (std::isfinite(value))
+        out << value;
+    };
     OutputFile out(file_name);
     out << "x,y," << (surface_y ? "depth," : "")
         << "u_x,u_y,sigma_xx,sigma_yy,sigma_xy,sigma_zz,sigma_1,sigma_2,"
            "angle_1,deviatoric_xx,deviatoric_yy,deviatoric_zz,deviatoric_xy,"
            "griffith_C,griffith_regime,fracture_angle"
-        << (with_temperature ? ",temperature\n" : "\n")
+        << (with_temperature ? ",temperature" : "")
+        << (with_strength ? ",tau_II,strength_brittle,strength_ductile,"
+                            "strength\n"
+                          : "\n")
         << std::setprecision(10);
     for (const StressSample<dim> &sample : samples)
       if (sample.value.inside)
@@ -80,6 +120,20 @@ namespace lithostress
           out << ',' << a.regime << ',' << a.fracture_angle;
           if (with_temperature)
             out << ',' << v.temperature;
+          if (with_strength)
+            {
+              out << ',';
+              if (!std::isnan(sample.tau_ii))
+                out << sample.tau_ii;
+              out << ',';
+              strength(out, sample.brittle_strength);
+              out << ',';
+              strength(out, sample.ductile_strength);
+              out << ',';
+              strength(out,
+                       std::min(sample.brittle_strength,
+                                sample.ductile_strength));
+            }
           out << '\n';
         }
     out.commit();
@@ -93,6 +147,10 @@ namespace lithostress
                      const TrilinosWrappers::MPI::Vector &,
                      const std::vector<Point<2>> &,
                      const bool);
+  template void
+  add_strength_envelope<2>(std::vector<StressSample<2>> &,
+                           const StressModel<2> &,
+                           const double);
   template void
   write_stress_samples<2>(const std::string &,
                           const std::vector<StressSample<2>> &,

@@ -193,7 +193,27 @@ namespace lithostress
     const ElasticModuli<dim> &moduli = stress_model.step_moduli(material.id);
     cell_matrix.reinit(n, n);
     cell_rhs.reinit(n);
-    if (with_stiffness)
+    if (stress_model.linearised(material.id))
+      {
+        // Newton's linearisation of a non-linear law (LinearisedStress):
+        // the tangent C_k, and σ₀ on the right-hand side, −∫ ε(v) : σ₀.
+        std::vector<LinearisedStress<dim>> linearisation;
+        stress_model.linearisation_at(cell, linearisation);
+        AssertDimension(linearisation.size(), fe_values.n_quadrature_points);
+        if (with_stiffness)
+          {
+            std::vector<SymmetricTensor<4, dim>> tangents;
+            for (const LinearisedStress<dim> &l : linearisation)
+              tangents.push_back(l.tangent);
+            add_cell_stiffness(fe_values, u, tangents, cell_matrix);
+          }
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          for (unsigned int i = 0; i < n; ++i)
+            cell_rhs(i) -= (fe_values[u].symmetric_gradient(i, q) *
+                            linearisation[q].stress) *
+                           fe_values.JxW(q);
+      }
+    else if (with_stiffness)
       add_law_stiffness(
         stress_model, fe_values, u, material.id, false, cell_matrix);
     for (const auto &load : loads.loads())
@@ -293,7 +313,8 @@ namespace lithostress
                            cell_rhs);
 
             if (cell_history != nullptr &&
-                stress_model.has_history(material.id))
+                stress_model.has_history(material.id) &&
+                !stress_model.linearised(material.id))
               {
                 cell_history->get(cell, history_values);
                 add_history_terms(stress_model,

@@ -88,6 +88,7 @@ namespace lithostress
     CreepStrain<dim>::components(rate, make_array_view(out.history_rate));
     CreepStrain<dim>::components(c_new, make_array_view(out.history));
     out.effective_viscosity = viscosity;
+    out.elastic_strain      = deviator(sigma).norm() / (2 * shear_modulus);
   }
 
   template class MaxwellRheology<2>;

@@ -184,6 +184,56 @@ namespace lithostress
   }
 
   template <int dim>
+  void
+  StressModel<dim>::linearisation_at(
+    const typename Triangulation<dim>::active_cell_iterator &cell,
+    std::vector<LinearisedStress<dim>>                      &values) const
+  {
+    Assert(linearised(cell->material_id()), ExcInternalError());
+    std::vector<Vector<double>> records;
+    linearisation->get(cell, records);
+    values.resize(records.size());
+    for (unsigned int q = 0; q < records.size(); ++q)
+      values[q] = LinearisedStress<dim>::from(records[q]);
+  }
+
+  template <int dim>
+  void
+  StressModel<dim>::attach_temperature(const TemperatureModel<dim> *model)
+  {
+    temperature = model;
+    if (model != nullptr)
+      return;
+    for (const auto &[id, law] : rheology_of)
+      if (law->needs_temperature())
+        throw_input_error("Temperature/Model",
+                          "is none, but the creep law of material " +
+                            materials(id).name +
+                            " has an activation energy or volume and needs "
+                            "a temperature (choose a model)");
+  }
+
+  template <int dim>
+  bool
+  StressModel<dim>::symmetric_operator() const
+  {
+    for (const auto &[id, law] : rheology_of)
+      if (linearised(id) && !law->symmetric_tangent())
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  bool
+  StressModel<dim>::has_nonlinear_material() const
+  {
+    for (const auto &[id, law] : rheology_of)
+      if (law->nonlinear())
+        return true;
+    return false;
+  }
+
+  template <int dim>
   bool
   StressModel<dim>::has_viscous_material() const
   {

@@ -103,6 +103,12 @@ namespace lithostress
           }
         data_out.add_data_vector(maxwell_time, "maxwell_time");
       }
+    // The non-linear laws' effective viscosity, strain rate and yielding.
+    const CellHistory<dim> *flow = stress_model.attached_flow_state();
+    if (flow != nullptr && flow->n_components() > 0)
+      data_out.add_data_vector(flow->dof_handler(),
+                               flow->values(),
+                               flow->names());
     data_out.build_patches(fe_space.mapping(),
                            subdivisions == 0 ? fe_space.degree() : subdivisions,
                            DataOut<dim>::curved_inner_cells);

@@ -261,15 +261,17 @@ namespace lithostress
   DiscreteProblem<dim>
   ElasticProblem<dim>::discrete_problem()
   {
-    return {dofs,
-            model.fe_space,
-            system,
-            model.stress_model,
-            model.loads,
-            model.prescribed_displacement,
-            keep_setup,
-            operator_version(),
-            assembled_history};
+    DiscreteProblem<dim> problem{dofs,
+                                 model.fe_space,
+                                 system,
+                                 model.stress_model,
+                                 model.loads,
+                                 model.prescribed_displacement,
+                                 keep_setup,
+                                 operator_version(),
+                                 assembled_history};
+    problem.symmetric = model.stress_model.symmetric_operator();
+    return problem;
   }
 
   template <int dim>

@@ -244,10 +244,11 @@ namespace lithostress
     if (time_stepping.enabled && time_stepping.resume)
       Checkpoint::check_resumable(output_directory, prm, communicator);
     if (time_stepping.enabled)
-      creep =
-        std::make_unique<CreepIntegrator<dim>>(triangulation,
-                                               fe_space->degree() + 1,
-                                               stress_model->history_layout());
+      creep = std::make_unique<CreepIntegrator<dim>>(
+        triangulation,
+        fe_space->degree() + 1,
+        stress_model->history_layout(),
+        stress_model->has_nonlinear_material());
     auto linear_solver = LinearSolverSelector<dim>::create(
       prm,
       *fe_space,

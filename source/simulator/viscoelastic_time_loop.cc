@@ -82,12 +82,23 @@ namespace lithostress
     }
     // A frictional fault's slip of this step counts only if it is accepted.
     typename CreepIntegrator<dim>::Increment increment;
+    newton_failed = false;
     if (settings.scheme != TimeStepping::Scheme::thesis)
       {
         model.set_time_step(h, weight);
-        record.linear_iterations +=
-          solve_system(false, t_new, &creep.step_history(), false);
-        record.nonlinear_iterations = 1;
+        if (!model.has_nonlinear_material())
+          {
+            record.linear_iterations +=
+              solve_system(false, t_new, &creep.step_history(), false);
+            record.nonlinear_iterations = 1;
+          }
+        else if (!newton_iteration(t_new, record))
+          {
+            newton_failed = true;
+            creep.restore_start();
+            problem.solution() = start_solution;
+            return false;
+          }
         TimerOutput::Scope timer(parts.access.timer, "creep update");
         increment = creep.finish_implicit_step(problem.dof_handler(),
                                                parts.access.fe_space,
@@ -112,6 +123,51 @@ namespace lithostress
     strain_scale = scale;
     creep.accept_step();
     problem.commit_slip();
+    return true;
+  }
+
+  template <int dim>
+  bool
+  ViscoelasticTimeLoop<dim>::newton_iteration(const double t_new,
+                                              StepRecord  &record)
+  {
+    CreepIntegrator<dim> &creep                 = parts.creep;
+    StressModel<dim>     &model                 = parts.stress_model;
+    ElasticProblem<dim>  &problem               = parts.problem;
+    const auto            linearise_at_solution = [&](const bool first) {
+      TimerOutput::Scope timer(parts.access.timer, "creep update");
+      const double       missed = creep.linearise(problem.dof_handler(),
+                                            parts.access.fe_space,
+                                            model,
+                                            problem.solution(),
+                                            first);
+      model.attach_linearisation(&creep.linearisation());
+      return missed;
+    };
+    // The first iterate is the solution of the start of the step.
+    linearise_at_solution(true);
+    std::ostringstream residuals;
+    for (record.nonlinear_iterations = 1;; ++record.nonlinear_iterations)
+      {
+        record.linear_iterations +=
+          solve_system(false, t_new, &creep.step_history(), false);
+        const double missed = linearise_at_solution(false);
+        residuals << (record.nonlinear_iterations > 1 ? ", " : "")
+                  << std::setprecision(2) << missed;
+        record.newton_residual = missed;
+        if (missed <= settings.newton_tolerance)
+          break;
+        if (record.nonlinear_iterations >= settings.newton_max_iterations)
+          {
+            parts.access.log << "  Newton's iteration of the step to t = "
+                             << settings.format(t_new)
+                             << " has not converged (relative residuals "
+                             << residuals.str() << "); the step is halved"
+                             << std::endl;
+            return false;
+          }
+      }
+    record.newton_residuals = residuals.str();
     return true;
   }
 
@@ -194,13 +250,14 @@ namespace lithostress
       OutputFile csv(a.path("time_steps.csv"));
       csv << "step,time,dt,dofs,cells,linear_iterations,nonlinear_iterations,"
              "rejected_steps,creep_strain_increment,error_estimate,"
-             "wall_time\n";
+             "wall_time,newton_residual\n";
       for (const StepRecord &r : steps)
         csv << r.step << ',' << std::setprecision(12) << r.time << ',' << r.dt
             << ',' << r.dofs << ',' << r.cells << ',' << r.linear_iterations
             << ',' << r.nonlinear_iterations << ',' << r.rejected << ','
             << std::setprecision(6) << r.creep_increment << ','
-            << r.error_estimate << ',' << r.wall_time << '\n';
+            << r.error_estimate << ',' << r.wall_time << ','
+            << r.newton_residual << '\n';
       csv.commit();
     });
   }
@@ -216,6 +273,10 @@ namespace lithostress
          << r.linear_iterations << " it";
     if (settings.scheme == TimeStepping::Scheme::thesis)
       line << " in " << r.nonlinear_iterations << " fixed-point iterations";
+    else if (parts.stress_model.has_nonlinear_material())
+      line << " in " << r.nonlinear_iterations
+           << " Newton iterations (relative residuals " << r.newton_residuals
+           << ")";
     line << ", creep increment " << std::setprecision(3) << r.creep_increment
          << ", error estimate " << r.error_estimate;
     if (r.rejected > 0)
@@ -240,6 +301,7 @@ namespace lithostress
     ++linear_solves;
     creep.start_history();
     model.attach_cell_history(&creep.cell_history());
+    model.attach_flow_state(&creep.flow_state());
     if (settings.output_at_zero)
       write_output(0);
 
@@ -366,6 +428,7 @@ namespace lithostress
                               a.communicator);
     problem.solution() = owned;
     parts.stress_model.attach_cell_history(&parts.creep.cell_history());
+    parts.stress_model.attach_flow_state(&parts.creep.flow_state());
     parts.start_output();
     a.log << "Resumed from " << directory << ": step " << step
           << ", t = " << settings.format(t) << " (" << t << " s), "
@@ -401,6 +464,12 @@ namespace lithostress
                            : "generalized midpoint rule, theta = " +
                                std::to_string(settings.theta))
                      << '\n';
+    if (settings.scheme == TimeStepping::Scheme::thesis &&
+        parts.stress_model.has_nonlinear_material())
+      throw_input_error("Time stepping/Scheme",
+                        "is thesis, whose fixed-point iteration is made for "
+                        "linear Maxwell creep; a non-linear rheology "
+                        "(visco-elasto-plastic) needs BDF2 or midpoint");
     parts.problem.keep_solver_setup(true);
     if (settings.resume)
       resume();
@@ -443,16 +512,20 @@ namespace lithostress
         // at half the tolerance.
         const double h     = t_new - t;
         const double power = parts.creep.second_order_step() ? 3 : 2;
-        dt                 = h *
-             std::max(0.1,
-                      std::pow(0.5 * settings.tolerance / record.error_estimate,
-                               1 / power));
+        dt                 = newton_failed ? 0.5 * h
+                                           : h * std::max(0.1,
+                                          std::pow(0.5 * settings.tolerance /
+                                                     record.error_estimate,
+                                                   1 / power));
         if (dt < settings.minimum_step)
           throw ComputationError(
             "the time step from t = " + settings.format(t) +
             " would have to be shorter than the Minimum time step (" +
-            settings.format(settings.minimum_step) +
-            ") to keep the creep-strain increment below the tolerance");
+            settings.format(settings.minimum_step) + ") " +
+            (newton_failed
+               ? "for Newton's iteration to converge (raise Time "
+                 "stepping/Maximum Newton iterations or Newton tolerance)"
+               : "to keep the creep-strain increment below the tolerance"));
         t_new = settings.next_time(t, step_limit(dt));
       }
     record.dt    = t_new - t;

@@ -55,7 +55,8 @@ namespace lithostress
                                dof_handler.get_communicator(),
                                solution,
                                report,
-                               problem.initial_guess);
+                               problem.initial_guess,
+                               problem.symmetric);
     report.solve_time = timer.wall_time();
     if (problem.keep_setup)
       {

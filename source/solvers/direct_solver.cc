@@ -60,8 +60,11 @@ namespace lithostress
     Timer timer(communicator, true);
     solution.reinit(system.locally_owned, communicator);
 
+    // Cholesky reads one triangle: an unsymmetric operator (a
+    // non-associated flow rule's Newton step) is factorised by KLU.
     const bool cholesky = package == "Cholesky" &&
-                          Utilities::MPI::n_mpi_processes(communicator) == 1;
+                          Utilities::MPI::n_mpi_processes(communicator) == 1 &&
+                          problem.symmetric;
     if (!cholesky)
       solve_with_amesos(system,
                         package == "Cholesky" ? "Amesos_Klu" : package,

@@ -14,6 +14,7 @@
 #include <lithostress/solvers/active_operator.h>
 #include <lithostress/solvers/coarse_grid_solver.h>
 #include <lithostress/solvers/multigrid_preconditioner.h>
+#include <lithostress/solvers/preconditioned_cg.h>
 
 #include <map>
 
@@ -280,11 +281,15 @@ namespace lithostress
                             false);
       if (rhs_norm > 0)
         {
-          SolverCG<VectorType> cg(control);
-          stop_on_signal(cg, communicator);
           try
             {
-              cg.solve(*system_operator, x, rhs, *preconditioner);
+              solve_by_krylov(control,
+                              problem.symmetric,
+                              communicator,
+                              *system_operator,
+                              x,
+                              rhs,
+                              *preconditioner);
             }
           catch (const SolverControl::NoConvergence &exc)
             {

@@ -53,7 +53,8 @@ namespace lithostress
                                comm,
                                solution,
                                report,
-                               problem.initial_guess);
+                               problem.initial_guess,
+                               problem.symmetric);
     report.solve_time   = timer.wall_time();
     report.memory_bytes = multigrid->memory_consumption();
     // Elastic cycles release the levels before the next mesh.

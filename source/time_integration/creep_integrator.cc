@@ -4,19 +4,33 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/time_integration/creep_integrator.h>
 
+#include <cmath>
+#include <limits>
+
 namespace lithostress
 {
   template <int dim>
   CreepIntegrator<dim>::CreepIntegrator(
     const parallel::distributed::Triangulation<dim> &triangulation,
     const unsigned int                               n_points_1d,
-    const HistoryLayout                             &layout)
+    const HistoryLayout                             &layout,
+    const bool                                       nonlinear)
       : layout(layout)
       , creep(triangulation, n_points_1d, layout.names())
       , history(triangulation, n_points_1d, layout.names())
       , start_rate(triangulation, n_points_1d, layout.names())
       , end_rate(triangulation, n_points_1d, layout.names())
       , previous(triangulation, n_points_1d, layout.names())
+      , linearised(triangulation,
+                   n_points_1d,
+                   nonlinear ? LinearisedStress<dim>::names()
+                             : std::vector<std::string>())
+      , flow(triangulation,
+             n_points_1d,
+             nonlinear ? std::vector<std::string>{"effective_viscosity",
+                                                  "strain_rate_II",
+                                                  "yielding"}
+                       : std::vector<std::string>())
   {
   }
 
@@ -29,6 +43,7 @@ namespace lithostress
     const ArrayView<const double> &rate_start,
     const ArrayView<const double> &rate_end,
     const double                   dt,
+    const double                   elastic_strain,
     const bool                     second_order)
   {
     const unsigned int n = c_old.size();
@@ -52,9 +67,7 @@ namespace lithostress
         local_error =
           std::max(local_error, 0.5 * dt * law.history_norm(combination));
       }
-    elastic_strain =
-      std::max(elastic_strain,
-               law.relaxation_time() * law.history_norm(rate_end));
+    this->elastic_strain = std::max(this->elastic_strain, elastic_strain);
   }
 
   template <int dim>
@@ -74,6 +87,8 @@ namespace lithostress
     history.setup();
     start_rate.setup();
     end_rate.setup();
+    linearised.setup();
+    flow.setup();
     start_rate_current = false;
   }
 
@@ -108,13 +123,14 @@ namespace lithostress
     const TrilinosWrappers::MPI::Vector &solution,
     const std::function<
       void(const typename Triangulation<dim>::active_cell_iterator &,
-           const std::vector<Point<dim>> &,
-           const std::vector<SymmetricTensor<2, dim>> &)> &visit) const
+           std::vector<RheologyInputs<dim>> &)> &visit) const
   {
     hp::FEValues<dim> hp_fe_values =
       ElasticAssembler<dim>::cell_values(fe_space);
-    std::vector<Tensor<2, dim>>          gradients;
-    std::vector<SymmetricTensor<2, dim>> strains;
+    std::vector<Tensor<2, dim>>      gradients;
+    std::vector<double>              temperatures;
+    std::vector<RheologyInputs<dim>> nodes;
+    const TemperatureModel<dim> *temperature = stress_model.temperature_model();
     // User functions (a temperature change) are evaluated in the stress:
     // an error on one rank reaches all.
     on_all_ranks(dof_handler.get_communicator(), [&]() {
@@ -131,10 +147,19 @@ namespace lithostress
               fe_space.displacement(fe_space.field_of(cell->active_fe_index()));
             gradients.resize(fe_values.n_quadrature_points);
             fe_values[u].get_function_gradients(solution, gradients);
-            strains.resize(gradients.size());
+            if (temperature != nullptr)
+              temperature->values(cell,
+                                  fe_values.get_quadrature_points(),
+                                  temperatures);
+            nodes.assign(gradients.size(), RheologyInputs<dim>());
             for (unsigned int q = 0; q < gradients.size(); ++q)
-              strains[q] = symmetrize(gradients[q]);
-            visit(cell, fe_values.get_quadrature_points(), strains);
+              {
+                nodes[q].position = fe_values.quadrature_point(q);
+                nodes[q].strain   = symmetrize(gradients[q]);
+                if (temperature != nullptr)
+                  nodes[q].temperature = temperatures[q];
+              }
+            visit(cell, nodes);
           }
     });
   }
@@ -157,27 +182,26 @@ namespace lithostress
       {
         std::vector<Vector<double>> c, rate;
         std::vector<double>         scratch;
-        RheologyInputs<dim>         in;
         RheologyOutputs<dim>        out;
-        for_each_cell_with_history(
-          dof_handler,
-          fe_space,
-          stress_model,
-          solution,
-          [&](const auto &cell, const auto &points, const auto &strains) {
-            const types::material_id id = cell->material_id();
-            creep.get(cell, c);
-            start_rate.get(cell, rate);
-            for (unsigned int q = 0; q < c.size(); ++q)
-              {
-                in.position = points[q];
-                in.strain   = strains[q];
-                in.history  = layout.of(id, c[q], scratch);
-                stress_model.evaluate(id, in, out);
-                store(id, out.history_rate, rate[q]);
-              }
-            start_rate.set(cell, rate);
-          });
+        for_each_cell_with_history(dof_handler,
+                                   fe_space,
+                                   stress_model,
+                                   solution,
+                                   [&](const auto &cell, auto &nodes) {
+                                     const types::material_id id =
+                                       cell->material_id();
+                                     creep.get(cell, c);
+                                     start_rate.get(cell, rate);
+                                     for (unsigned int q = 0; q < c.size(); ++q)
+                                       {
+                                         RheologyInputs<dim> &in = nodes[q];
+                                         in.history =
+                                           layout.of(id, c[q], scratch);
+                                         stress_model.evaluate(id, in, out);
+                                         store(id, out.history_rate, rate[q]);
+                                       }
+                                     start_rate.set(cell, rate);
+                                   });
         start_rate.update_ghost_values();
         start_rate_current = true;
       }
@@ -207,6 +231,66 @@ namespace lithostress
   }
 
   template <int dim>
+  double
+  CreepIntegrator<dim>::linearise(const DoFHandler<dim>         &dof_handler,
+                                  const FiniteElementSpace<dim> &fe_space,
+                                  const StressModel<dim>        &stress_model,
+                                  const TrilinosWrappers::MPI::Vector &solution,
+                                  const bool                           first)
+  {
+    AssertThrow(linearised.n_components() > 0, ExcInternalError());
+    double                      missed = 0, largest = 0;
+    std::vector<Vector<double>> h, records;
+    std::vector<double>         h_scratch;
+    RheologyOutputs<dim>        out;
+    for_each_cell_with_history(
+      dof_handler,
+      fe_space,
+      stress_model,
+      solution,
+      [&](const auto &cell, auto &nodes) {
+        const types::material_id id = cell->material_id();
+        if (!stress_model.rheology(id).nonlinear())
+          return;
+        history.get(cell, h);
+        linearised.get(cell, records);
+        for (unsigned int q = 0; q < h.size(); ++q)
+          {
+            RheologyInputs<dim> &in = nodes[q];
+            in.time_step            = step;
+            in.weight               = step_weight;
+            in.history              = layout.of(id, h[q], h_scratch);
+            stress_model.evaluate(id, in, out);
+            // σ_lin(ε) = C ε + σ₀ + σ_init: what the last solve balanced.
+            const SymmetricTensor<2, dim> sigma =
+              out.stress.in_plane - in.initial_stress.in_plane;
+            if (!first)
+              {
+                const LinearisedStress<dim> old =
+                  LinearisedStress<dim>::from(records[q]);
+                missed = std::max(
+                  missed,
+                  (sigma - old.tangent * in.strain - old.stress).norm());
+              }
+            largest = std::max(largest, deviator(tensor_3d(out.stress)).norm());
+            LinearisedStress<dim> now;
+            now.tangent = out.tangent;
+            now.stress  = sigma - out.tangent * in.strain;
+            now.to(records[q]);
+          }
+        linearised.set(cell, records);
+      });
+    linearised.update_ghost_values();
+    const MPI_Comm comm = dof_handler.get_communicator();
+    missed              = Utilities::MPI::max(missed, comm);
+    largest             = Utilities::MPI::max(largest, comm);
+    if (missed == 0)
+      return 0;
+    return largest > 0 ? missed / largest
+                       : std::numeric_limits<double>::infinity();
+  }
+
+  template <int dim>
   typename CreepIntegrator<dim>::Increment
   CreepIntegrator<dim>::finish_implicit_step(
     const DoFHandler<dim>               &dof_handler,
@@ -217,16 +301,14 @@ namespace lithostress
     Increment                   increment;
     std::vector<Vector<double>> c, h, rate;
     std::vector<double>         c_scratch, h_scratch, rate_scratch;
-    RheologyInputs<dim>         in;
+    std::vector<Vector<double>> flow_values;
     RheologyOutputs<dim>        out;
-    in.time_step = step;
-    in.weight    = step_weight;
     for_each_cell_with_history(
       dof_handler,
       fe_space,
       stress_model,
       solution,
-      [&](const auto &cell, const auto &points, const auto &strains) {
+      [&](const auto &cell, auto &nodes) {
         const types::material_id id = cell->material_id();
         creep.get(cell, c);
         history.get(cell, h);
@@ -235,9 +317,10 @@ namespace lithostress
           {
             // The step's stress with the history h* (the history strain
             // c*), the history's rate and h_{n+1} = h* + w Δt ḣ_{n+1}.
-            in.position = points[q];
-            in.strain   = strains[q];
-            in.history  = layout.of(id, h[q], h_scratch);
+            RheologyInputs<dim> &in = nodes[q];
+            in.time_step            = step;
+            in.weight               = step_weight;
+            in.history              = layout.of(id, h[q], h_scratch);
             stress_model.evaluate(id, in, out);
             increment.add(stress_model.rheology(id),
                           layout.of(id, c[q], c_scratch),
@@ -245,15 +328,29 @@ namespace lithostress
                           layout.of(id, rate[q], rate_scratch),
                           make_array_view(out.history_rate),
                           step,
+                          out.elastic_strain,
                           bdf2_step);
             store(id, out.history, c[q]);
             store(id, out.history_rate, rate[q]);
+            if (flow.n_components() > 0)
+              {
+                // An infinite viscosity (no flow) is written as 0.
+                flow_values.resize(c.size(), Vector<double>(3));
+                flow_values[q][0] = std::isfinite(out.effective_viscosity)
+                                      ? out.effective_viscosity
+                                      : 0.0;
+                flow_values[q][1] = out.inelastic_strain_rate;
+                flow_values[q][2] = out.yielding ? 1.0 : 0.0;
+              }
           }
         creep.set(cell, c);
         end_rate.set(cell, rate);
+        if (flow.n_components() > 0 && stress_model.rheology(id).nonlinear())
+          flow.set(cell, flow_values);
       });
     creep.update_ghost_values();
     end_rate.update_ghost_values();
+    flow.update_ghost_values();
     return all_ranks(increment);
   }
 
@@ -269,14 +366,13 @@ namespace lithostress
     double                      change = 0, largest = 0;
     std::vector<Vector<double>> c, h, rate;
     std::vector<double>  c_scratch, h_scratch, rate_scratch, h_new, difference;
-    RheologyInputs<dim>  in;
     RheologyOutputs<dim> out;
     for_each_cell_with_history(
       dof_handler,
       fe_space,
       stress_model,
       solution,
-      [&](const auto &cell, const auto &points, const auto &strains) {
+      [&](const auto &cell, auto &nodes) {
         const types::material_id id  = cell->material_id();
         const Rheology<dim>     &law = stress_model.rheology(id);
         creep.get(cell, c);
@@ -288,9 +384,8 @@ namespace lithostress
             // its rate; the new history c_n + (Δt/2)(ḣ_n + ḣ).
             const ArrayView<const double> h_old =
               layout.of(id, h[q], h_scratch);
-            in.position = points[q];
-            in.strain   = strains[q];
-            in.history  = h_old;
+            RheologyInputs<dim> &in = nodes[q];
+            in.history              = h_old;
             stress_model.evaluate(id, in, out);
             const ArrayView<const double> c_old =
               layout.of(id, c[q], c_scratch);
@@ -350,12 +445,15 @@ namespace lithostress
               rate_end.resize(c_old.size());
               for (unsigned int k = 0; k < rate_end.size(); ++k)
                 rate_end[k] = 2.0 / step * (c_new[k] - c_old[k]) - r_old[k];
-              increment.add(stress_model.rheology(id),
+              const Rheology<dim> &law = stress_model.rheology(id);
+              increment.add(law,
                             c_old,
                             c_new,
                             r_old,
                             make_array_view(rate_end),
-                            step);
+                            step,
+                            law.relaxation_time() *
+                              law.history_norm(make_array_view(rate_end)));
               store(id, rate_end, rate[q]);
             }
           creep.set(cell, h);

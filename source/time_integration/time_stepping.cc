@@ -107,6 +107,20 @@ namespace lithostress
                       Patterns::Integer(1),
                       "Thesis scheme: a step that needs more iterations ends "
                       "the run with an error.");
+    prm.declare_entry("Newton tolerance",
+                      "1e-8",
+                      Patterns::Double(0),
+                      "Steps with a non-linear rheology (visco-elasto-"
+                      "plastic): Newton's iteration of a step stops when the "
+                      "largest stress its last linearisation missed, relative "
+                      "to the largest deviatoric stress, is below this "
+                      "(doc/equations.md section 12).");
+    prm.declare_entry("Maximum Newton iterations",
+                      "12",
+                      Patterns::Integer(1),
+                      "Steps with a non-linear rheology: a step whose Newton "
+                      "iteration has not converged after this many "
+                      "iterations is tried again with half the length.");
     prm.declare_entry("Refinement interval",
                       "0",
                       Patterns::Integer(0),
@@ -150,6 +164,8 @@ namespace lithostress
     fixed_point_tolerance         = prm.get_double("Fixed point tolerance");
     fixed_point_max_iterations =
       prm.get_integer("Maximum fixed point iterations");
+    newton_tolerance        = prm.get_double("Newton tolerance");
+    newton_max_iterations   = prm.get_integer("Maximum Newton iterations");
     refinement_interval     = prm.get_integer("Refinement interval");
     checkpoint_interval     = prm.get_integer("Checkpoint interval");
     resume                  = prm.get_bool("Resume");

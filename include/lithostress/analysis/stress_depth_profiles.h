@@ -50,8 +50,10 @@ namespace lithostress
     /** x of each line [m] and its label in the file name. */
     std::vector<double>      positions;
     std::vector<std::string> labels;
-    unsigned int             n_points     = 101;
-    double                   length_scale = 1;
+    unsigned int             n_points = 101;
+    /** The strain rate of the strength envelope [1/s] (0: none). */
+    double envelope_strain_rate = 1e-15;
+    double length_scale         = 1;
   };
 } // namespace lithostress
 

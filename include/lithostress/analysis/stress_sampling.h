@@ -5,6 +5,7 @@
 #include <lithostress/analysis/point_values.h>
 #include <lithostress/analysis/stress_postprocessor.h>
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,7 +18,27 @@ namespace lithostress
   {
     PointValue<dim> value;
     StressAnalysis  analysis;
+    /** τ_II of the sample's stress and the strength envelope of its rock
+     * (add_strength_envelope(); NaN where not computed, infinite where the
+     * rock has no such branch). */
+    double tau_ii           = std::numeric_limits<double>::quiet_NaN();
+    double brittle_strength = std::numeric_limits<double>::quiet_NaN();
+    double ductile_strength = std::numeric_limits<double>::quiet_NaN();
   };
+
+  /**
+   * The strength envelope (Goetze & Evans 1979) at every sample inside the
+   * body: τ_II of the stress, and the brittle and ductile strength of its
+   * material's rock law at the sample's temperature and pressure P = −tr σ/3
+   * for the strain rate @p strain_rate [1/s]
+   * (Rheology::strength_envelope()). Where no law has a strength, nothing
+   * is set.
+   */
+  template <int dim>
+  void
+  add_strength_envelope(std::vector<StressSample<dim>> &samples,
+                        const StressModel<dim>         &stress_model,
+                        const double                    strain_rate);
 
   /**
    * Evaluate displacement, stress and the stress analysis (principal and

@@ -25,7 +25,10 @@ namespace lithostress
    * moduli (StressModel::step_moduli(), the relaxed shear modulus) and the
    * laws' history h* of the step (MaxwellRheology: the history strain c*)
    * adds −∫ ε(v) : σ_h(h*) dx to the right-hand side
-   * (StressModel::history_stress()).
+   * (StressModel::history_stress()). A non-linear law's step (Newton's
+   * iteration) is assembled from its linearisation at the iterate instead
+   * (StressModel::linearised(), LinearisedStress): the tangent C_k and
+   * −∫ ε(v) : σ₀ dx.
    */
   template <int dim>
   class ElasticAssembler

@@ -11,6 +11,7 @@
 #include <lithostress/materials/material.h>
 
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -80,6 +81,22 @@ namespace lithostress
     /** The effective viscosity τ_II/(2 ε̇_II) of the creep [Pa s]; 0 for
      * a law that does not creep. */
     double effective_viscosity = 0;
+    /** The elastic deviatoric strain ‖s‖/(2G) of the stress: the scale of
+     * the time loop's step control (CreepIntegrator::Increment). */
+    double elastic_strain = 0;
+    /** The second invariant ε̇_II of the inelastic (creep and plastic)
+     * strain rate [1/s], and whether the point yields (plasticity). */
+    double inelastic_strain_rate = 0;
+    bool   yielding              = false;
+  };
+
+  /** The two branches of a strength envelope at a point [Pa]: the brittle
+   * (yield) stress and the ductile stress that creeps at a reference strain
+   * rate; infinite where the law has no such branch. */
+  struct StrengthEnvelope
+  {
+    double brittle = std::numeric_limits<double>::infinity();
+    double ductile = std::numeric_limits<double>::infinity();
   };
 
   /**
@@ -158,6 +175,55 @@ namespace lithostress
     uniform_tangent() const
     {
       return true;
+    }
+
+    /**
+     * Whether the stress of a step depends non-linearly on the strain
+     * (power-law creep, plasticity): the time loop then solves each step by
+     * Newton's method, assembling at every iterate the tangent and stress of
+     * evaluate() there (LinearisedStress, doc/equations.md §12). Such a law
+     * has no uniform tangent.
+     */
+    virtual bool
+    nonlinear() const
+    {
+      return false;
+    }
+
+    /** Whether the consistent tangent of evaluate() has the major
+     * symmetry C_ijkl = C_klij (CG applies); a non-associated flow rule's
+     * has not, and the linear solvers then use GMRES. */
+    virtual bool
+    symmetric_tangent() const
+    {
+      return true;
+    }
+
+    /** Whether evaluate() reads RheologyInputs::temperature (a
+     * temperature-activated creep law): the model must then have a
+     * `Temperature/Model`. */
+    virtual bool
+    needs_temperature() const
+    {
+      return false;
+    }
+
+    /**
+     * The strength envelope of the intact rock (Goetze & Evans 1979) at
+     * temperature @p temperature [K] and pressure @p pressure [Pa,
+     * compression positive]: the τ_II at which it yields and the τ_II at
+     * which it creeps at ε̇_II = @p strain_rate [1/s]. Both infinite for a
+     * law without yield or creep (the default).
+     */
+    virtual StrengthEnvelope
+    strength_envelope(const double temperature,
+                      const double pressure,
+                      const double strain_rate) const
+    {
+      (void)temperature;
+      (void)pressure;
+      (void)strain_rate;
+      return {};
     }
 
     /** The time over which the law relaxes stress [s] (0: it does not):

@@ -8,6 +8,7 @@
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/history_layout.h>
 #include <lithostress/materials/initial_stress_source.h>
+#include <lithostress/materials/linearised_stress.h>
 #include <lithostress/materials/material.h>
 #include <lithostress/materials/rheology.h>
 #include <lithostress/temperature/temperature_model.h>
@@ -163,6 +164,49 @@ namespace lithostress
             const Point<dim>        &p,
             const bool               of_state = false) const;
 
+    /**
+     * Whether the step of a cell of material @p id is linearised: its law
+     * is non-linear (Rheology::nonlinear()), a step is under way
+     * (time_step() > 0) and a linearisation is attached. The assembly then
+     * takes the tangent and σ₀ of linearisation() at each quadrature point
+     * instead of the law's tangent and history stress.
+     */
+    bool
+    linearised(const types::material_id id) const
+    {
+      return linearisation != nullptr && step_length > 0 &&
+             rheology_of.at(id)->nonlinear();
+    }
+
+    /** The linearisation at the quadrature points (CellHistory's nodes) of
+     * the owned @p cell, whose law is linearised(), into @p values. */
+    void
+    linearisation_at(
+      const typename Triangulation<dim>::active_cell_iterator &cell,
+      std::vector<LinearisedStress<dim>>                      &values) const;
+
+    /** Whether the current operator is symmetric: false where a linearised
+     * law's tangent lacks the major symmetry (Rheology::symmetric_tangent(),
+     * a non-associated flow rule). */
+    bool
+    symmetric_operator() const;
+
+    /** Whether some material's law is non-linear: the time loop's steps
+     * are then Newton iterations. */
+    bool
+    has_nonlinear_material() const;
+
+    /** Assemble non-linear laws' steps with @p field (records of
+     * LinearisedStress, owned by CreepIntegrator; nullptr: none). Marks a
+     * new operator (moduli_version()): call after every change of the
+     * field's values. */
+    void
+    attach_linearisation(const CellHistory<dim> *field)
+    {
+      linearisation = field;
+      ++version;
+    }
+
     /** The stress of the strain @p strain under the current step's
      * tangent at @p p (no history, no initial stress): the linear law of
      * the operator the goals' dual problems solve. */
@@ -190,12 +234,10 @@ namespace lithostress
 
     /** Give the model the section's temperature (`Temperature/Model`;
      * null: none), owned by the caller, for the laws and the output that
-     * read it. */
+     * read it. Throws InputError naming the material whose law needs a
+     * temperature (Rheology::needs_temperature()) if there is none. */
     void
-    attach_temperature(const TemperatureModel<dim> *model)
-    {
-      temperature = model;
-    }
+    attach_temperature(const TemperatureModel<dim> *model);
 
     /** The temperature attached, or null where the model has none. */
     const TemperatureModel<dim> *
@@ -217,6 +259,22 @@ namespace lithostress
     attach_cell_history(const CellHistory<dim> *history)
     {
       cell_history = history;
+    }
+
+    /** Write the fields of @p state (CreepIntegrator::flow_state(): the
+     * non-linear laws' effective viscosity, strain rate and yielding) with
+     * the solution (nullptr: none). */
+    void
+    attach_flow_state(const CellHistory<dim> *state)
+    {
+      flow_state = state;
+    }
+
+    /** The attached flow state, or nullptr. */
+    const CellHistory<dim> *
+    attached_flow_state() const
+    {
+      return flow_state;
     }
 
     /** The attached cell history, or nullptr. */
@@ -250,8 +308,10 @@ namespace lithostress
     HistoryLayout                                 layout;
     std::vector<double>                           zero_history;
     std::vector<const InitialStressSource<dim> *> initial_stress_loads;
-    const CellHistory<dim>                       *cell_history = nullptr;
-    const TemperatureModel<dim>                  *temperature  = nullptr;
+    const CellHistory<dim>                       *cell_history  = nullptr;
+    const CellHistory<dim>                       *linearisation = nullptr;
+    const CellHistory<dim>                       *flow_state    = nullptr;
+    const TemperatureModel<dim>                  *temperature   = nullptr;
     double             step_length = 0, step_theta = 1;
     unsigned long long version = 0;
   };

@@ -72,6 +72,14 @@ namespace lithostress
     bool
     attempt_step(const double t_new, StepRecord &record);
 
+    /** Newton's iteration of the step to @p t_new for non-linear laws
+     * (doc/equations.md §12): each iteration linearises the laws at the
+     * iterate (CreepIntegrator::linearise()) and solves the linear problem
+     * of the linearisation; false if it has not converged within the
+     * Maximum Newton iterations. */
+    bool
+    newton_iteration(const double t_new, StepRecord &record);
+
     /** The thesis scheme's fixed-point iteration of the step to
      * @p t_new (thesis §3.9, ELVIS and CREEPS); returns the increment. */
     typename CreepIntegrator<dim>::Increment
@@ -126,8 +134,11 @@ namespace lithostress
     double strain_scale = 0;
     /** The largest deviatoric stress of the run so far: the scale of the
      * thesis scheme's fixed-point test. */
-    double                  stress_scale = 0;
-    unsigned int            step = 0, linear_solves = 0;
+    double       stress_scale = 0;
+    unsigned int step = 0, linear_solves = 0;
+    /** Whether the last attempt_step() failed in Newton's iteration (the
+     * step is then halved). */
+    bool                    newton_failed = false;
     std::vector<StepRecord> steps;
     /** The solution at the start of a step (restored when the step is
      * rejected). */

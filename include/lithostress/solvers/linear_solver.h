@@ -146,6 +146,10 @@ namespace lithostress
      * condensed system zeroes the constrained DoFs of its copy (the
      * system decouples them); direct solvers ignore it. */
     const TrilinosWrappers::MPI::Vector *initial_guess = nullptr;
+    /** Whether the operator is symmetric (CG applies); a non-associated
+     * flow rule's Newton step is not, and the Krylov solvers then run
+     * GMRES (StressModel::symmetric_operator()). */
+    bool symmetric = true;
   };
 
   /**

@@ -153,20 +153,30 @@ namespace lithostress
                                                     *fe,
                                                     QGauss<dim>(n_points_1d),
                                                     update_quadrature_points);
-      // The cell whose points `values` holds (none yet).
+      // The cell whose points `values` holds (none yet), and the
+      // linearisation of a non-linear law's step there (LinearisedStress).
       auto last =
         std::make_shared<std::pair<bool, TriaCell>>(false, TriaCell());
-      return
-        [&problem, fe, values, last](const auto &cell, const unsigned int q)
-          -> SymmetricTensor<4, dim> {
-          if (!last->first || last->second != TriaCell(cell))
-            {
-              *last = {true, TriaCell(cell)};
-              values->reinit(last->second);
-            }
-          return problem.stress_model.tangent(cell->material_id(),
-                                              values->quadrature_point(q));
-        };
+      auto linearisation =
+        std::make_shared<std::vector<LinearisedStress<dim>>>();
+      return [&problem, fe, values, last, linearisation](const auto &cell,
+                                                         const unsigned int q)
+               -> SymmetricTensor<4, dim> {
+        const StressModel<dim> &model = problem.stress_model;
+        const bool linearised         = model.linearised(cell->material_id());
+        if (!last->first || last->second != TriaCell(cell))
+          {
+            *last = {true, TriaCell(cell)};
+            values->reinit(last->second);
+            if (linearised)
+              model.linearisation_at(
+                typename Triangulation<dim>::active_cell_iterator(last->second),
+                *linearisation);
+          }
+        if (linearised)
+          return (*linearisation)[q].tangent;
+        return model.tangent(cell->material_id(), values->quadrature_point(q));
+      };
     }
 
     /** MatrixFree flags of the elasticity operator: gradients and JxW in

@@ -3,6 +3,7 @@
 
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
 
 #include <lithostress/solvers/linear_solver.h>
 
@@ -11,13 +12,43 @@
 namespace lithostress
 {
   /**
+   * Solve @p matrix x = @p rhs with @p preconditioner by CG, or where the
+   * operator is not @p symmetric (a non-associated flow rule's Newton step)
+   * by GMRES with right preconditioning (restart 100), so that @p control
+   * sees the unpreconditioned residual either way; stops on a signal.
+   */
+  template <typename VectorType, typename Matrix, typename Preconditioner>
+  void
+  solve_by_krylov(SolverControl        &control,
+                  const bool            symmetric,
+                  const MPI_Comm        communicator,
+                  const Matrix         &matrix,
+                  VectorType           &x,
+                  const VectorType     &rhs,
+                  const Preconditioner &preconditioner)
+  {
+    if (symmetric)
+      {
+        SolverCG<VectorType> cg(control);
+        stop_on_signal(cg, communicator);
+        cg.solve(matrix, x, rhs, preconditioner);
+        return;
+      }
+    typename SolverGMRES<VectorType>::AdditionalData data(100, true);
+    SolverGMRES<VectorType>                          gmres(control, data);
+    stop_on_signal(gmres, communicator);
+    gmres.solve(matrix, x, rhs, preconditioner);
+  }
+
+  /**
    * CG on @p system's matrix from @p initial_guess (nullptr: zero; its
    * constrained DoFs set to zero), preconditioned by @p preconditioner,
    * until ‖r‖ ≤ @p relative_tolerance ‖f‖ (unpreconditioned residual), at
    * most @p max_iterations; @p solution is sized to the owned DoFs. The
    * iterations and the final relative residual go to @p report. A solve that
    * does not converge throws ComputationError naming @p name and the entries to
-   * change; an interrupted one RunInterrupted (stop_on_signal()).
+   * change; an interrupted one RunInterrupted (stop_on_signal()). GMRES
+   * instead where the operator is not @p symmetric (solve_by_krylov()).
    */
   template <int dim, typename Preconditioner>
   void
@@ -29,7 +60,8 @@ namespace lithostress
                              const MPI_Comm                 communicator,
                              TrilinosWrappers::MPI::Vector &solution,
                              SolverReport                  &report,
-                             const TrilinosWrappers::MPI::Vector *initial_guess)
+                             const TrilinosWrappers::MPI::Vector *initial_guess,
+                             const bool symmetric = true)
   {
     solution.reinit(system.locally_owned, communicator);
     if (initial_guess != nullptr)
@@ -39,19 +71,23 @@ namespace lithostress
       }
     const double rhs_norm = system.rhs.l2_norm();
     check_right_hand_side(rhs_norm);
-    SolverControl                           control(max_iterations,
+    SolverControl control(max_iterations,
                           relative_tolerance * rhs_norm,
                           false,
                           false);
-    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-    stop_on_signal(cg, communicator);
     if (rhs_norm == 0)
       solution = 0;
     else
       {
         try
           {
-            cg.solve(system.matrix, solution, system.rhs, preconditioner);
+            solve_by_krylov(control,
+                            symmetric,
+                            communicator,
+                            system.matrix,
+                            solution,
+                            system.rhs,
+                            preconditioner);
           }
         catch (const SolverControl::NoConvergence &exc)
           {

@@ -26,6 +26,10 @@ namespace lithostress
     /** max ‖Δc‖ and the step's relative local error estimate. */
     double creep_increment = 0, error_estimate = 0;
     double wall_time = 0;
+    /** Newton's iteration of a non-linear step: the last relative
+     * residual, and all of them (for the progress line). */
+    double      newton_residual = 0;
+    std::string newton_residuals;
 
     /** boost::serialization of the record. */
     template <class Archive>
@@ -34,7 +38,7 @@ namespace lithostress
     {
       archive &step &time &dt &dofs &cells &linear_iterations
         &nonlinear_iterations &rejected &creep_increment &error_estimate
-          &wall_time;
+          &wall_time &newton_residual &newton_residuals;
     }
   };
 

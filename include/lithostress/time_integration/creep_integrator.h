@@ -68,7 +68,8 @@ namespace lithostress
 
       /** Include one node of a material with law @p law: history @p c_old
        * → @p c_new over a step of length @p dt with start and end rates
-       * @p rate_start, @p rate_end. */
+       * @p rate_start, @p rate_end, and the elastic strain
+       * @p elastic_strain at the end (RheologyOutputs::elastic_strain). */
       void
       add(const Rheology<dim>           &law,
           const ArrayView<const double> &c_old,
@@ -76,6 +77,7 @@ namespace lithostress
           const ArrayView<const double> &rate_start,
           const ArrayView<const double> &rate_end,
           const double                   dt,
+          const double                   elastic_strain,
           const bool                     second_order = false);
 
 
@@ -93,11 +95,13 @@ namespace lithostress
 
     /** History fields on @p triangulation with the assembly's Gauss
      * points (@p n_points_1d per direction), each record laid out by
-     * @p layout (StressModel::history_layout()). */
+     * @p layout (StressModel::history_layout()), and the field of Newton's
+     * linearisation if @p nonlinear (some law is non-linear). */
     CreepIntegrator(
       const parallel::distributed::Triangulation<dim> &triangulation,
       const unsigned int                               n_points_1d,
-      const HistoryLayout                             &layout);
+      const HistoryLayout                             &layout,
+      const bool                                       nonlinear = false);
 
     /** The history h_n (the creep strain c_n): what persists (transferred
      * with the mesh, written to checkpoints). */
@@ -136,6 +140,8 @@ namespace lithostress
       previous.load_from_checkpoint();
       history.setup();
       end_rate.setup();
+      linearised.setup();
+      flow.setup();
       start_rate_current = true;
       previous_step      = previous_dt;
     }
@@ -217,6 +223,44 @@ namespace lithostress
       return bdf2_step;
     }
 
+    /**
+     * Newton's linearisation of the step of begin_step() at the iterate
+     * @p solution, for the materials whose law is non-linear: at every node
+     * the tangent C_k and σ₀ = σ(ε_k) − σ_init − C_k ε_k (LinearisedStress)
+     * into linearisation(), which StressModel::attach_linearisation() then
+     * gives the assembly. Unless @p first, returns how far the previous
+     * linearisation missed the stress at the new iterate,
+     * max ‖σ(ε_k) − σ_lin(ε_k)‖ over max ‖dev σ(ε_k)‖ (in-plane; all
+     * ranks): the residual of the step's equilibrium that the last linear
+     * solve left, since that solve balanced σ_lin exactly. Newton's method
+     * makes it fall quadratically (doc/equations.md §12).
+     */
+    double
+    linearise(const DoFHandler<dim>               &dof_handler,
+              const FiniteElementSpace<dim>       &fe_space,
+              const StressModel<dim>              &stress_model,
+              const TrilinosWrappers::MPI::Vector &solution,
+              const bool                           first);
+
+    /** How the non-linear laws' rocks flow at the end of the last
+     * accepted step, at the nodes: `effective_viscosity` τ_II/(2 ε̇_II)
+     * [Pa s], `strain_rate_II` ε̇_II of the inelastic strain [1/s] and
+     * `yielding` (1 where plastic, else 0); zero on a new mesh until the
+     * next step, and where the law is linear. No components without a
+     * non-linear law. ParaView fields (StressModel::attach_flow_state()). */
+    const CellHistory<dim> &
+    flow_state() const
+    {
+      return flow;
+    }
+
+    /** The linearisation of the last linearise(). */
+    const CellHistory<dim> &
+    linearisation() const
+    {
+      return linearised;
+    }
+
     /** End an implicit step with the new solution: c_{n+1} from the step
      * stress with the weight of begin_step() (the stress model's step
      * moduli must be those of the step). */
@@ -255,9 +299,10 @@ namespace lithostress
 
   private:
     /**
-     * Call @p visit(cell, points, strains) for every owned cell whose law
-     * keeps a history, with the nodes (quadrature points) and the strain
-     * of @p solution at them.
+     * Call @p visit(cell, nodes) for every owned cell whose law keeps a
+     * history, with the inputs of the law at its nodes (quadrature
+     * points): the position, the strain of @p solution and the temperature
+     * (where the model has one) set; the rest is the caller's.
      */
     void
     for_each_cell_with_history(
@@ -267,8 +312,7 @@ namespace lithostress
       const TrilinosWrappers::MPI::Vector &solution,
       const std::function<
         void(const typename Triangulation<dim>::active_cell_iterator &,
-             const std::vector<Point<dim>> &,
-             const std::vector<SymmetricTensor<2, dim>> &)> &visit) const;
+             std::vector<RheologyInputs<dim>> &)> &visit) const;
 
     /** Put material @p id's history values @p values into @p record (a
      * record of the layout, from CellHistory::get()). */
@@ -291,6 +335,11 @@ namespace lithostress
     /** c_n, the step's history strain c*, the rates at the start and end
      * of the step, and c_{n−1}. */
     CellHistory<dim> creep, history, start_rate, end_rate, previous;
+    /** Newton's linearisation of a step (records of LinearisedStress; no
+     * components without a non-linear law). */
+    CellHistory<dim> linearised;
+    /** flow_state(). */
+    CellHistory<dim> flow;
     /** Whether start_rate belongs to the current creep strain and
      * solution (false after a mesh change). */
     bool                                  start_rate_current = false;

@@ -83,6 +83,9 @@ namespace lithostress
     double              theta                      = 1;
     double              fixed_point_tolerance      = 1e-6;
     unsigned int        fixed_point_max_iterations = 50;
+    /** Newton's iteration of a step with a non-linear law. */
+    double       newton_tolerance      = 1e-8;
+    unsigned int newton_max_iterations = 12;
     /** Refine the mesh every this many steps (0: never in the loop). */
     unsigned int refinement_interval = 0;
     /** Write a checkpoint every this many steps (0: only at the end). */
