@@ -21,7 +21,15 @@ namespace lithostress
                       "",
                       Patterns::Anything(),
                       "Temperature change Delta T [K] as a function of x, y "
-                      "[m] (and t [s]); empty = no thermal load.");
+                      "[m] (and t [s]); `temperature model`: Delta T = T - "
+                      "Reference temperature with T of Temperature/Model "
+                      "(function or plate cooling); empty = no thermal "
+                      "load.");
+    prm.declare_entry("Reference temperature",
+                      "273",
+                      Patterns::Double(0),
+                      "T_ref [K] of Temperature change = temperature model: "
+                      "the temperature at which the body is unstrained.");
     prm.declare_entry("Constants",
                       "",
                       Patterns::Anything(),
@@ -45,8 +53,8 @@ namespace lithostress
 
   template <int dim>
   bool
-  ThermalStrain<dim>::parse_parameters(ParameterHandler &prm,
-                                       const ModelDescription<dim> &)
+  ThermalStrain<dim>::parse_parameters(ParameterHandler            &prm,
+                                       const ModelDescription<dim> &model)
   {
     const std::string where = "Loads/Thermal strain/";
     prm.enter_subsection("Thermal strain");
@@ -55,13 +63,28 @@ namespace lithostress
     const std::string constants = prm.get("Constants");
     coefficient                 = prm.get_double("Expansion coefficient");
     const std::string type      = Utilities::trim(prm.get("Coefficient type"));
+    reference_temperature       = prm.get_double("Reference temperature");
     prm.leave_subsection();
     if (expression.empty())
       return false;
-    temperature_change =
-      std::make_unique<ParsedExpression<dim>>(expression,
-                                              constants,
-                                              where + "Temperature change");
+    if (expression == "temperature model")
+      {
+        temperature =
+          dynamic_cast<const PointwiseTemperature<dim> *>(model.temperature);
+        if (temperature == nullptr)
+          throw_input_error(where + "Temperature change",
+                            "is `temperature model`, but " +
+                              std::string(model.temperature == nullptr
+                                            ? "Temperature/Model is none"
+                                            : "the Temperature/Model is not a "
+                                              "closed form of position") +
+                              " (choose function or plate cooling)");
+      }
+    else
+      temperature_change =
+        std::make_unique<ParsedExpression<dim>>(expression,
+                                                constants,
+                                                where + "Temperature change");
     if (type == "linear")
       volumetric = false;
     else if (type == "volumetric")
@@ -78,8 +101,10 @@ namespace lithostress
   double
   ThermalStrain<dim>::initial_strain(const Point<dim> &p) const
   {
-    return (volumetric ? coefficient / 3.0 : coefficient) *
-           temperature_change->value(p, this->time());
+    const double delta_t = temperature != nullptr
+                             ? temperature->value(p) - reference_temperature
+                             : temperature_change->value(p, this->time());
+    return (volumetric ? coefficient / 3.0 : coefficient) * delta_t;
   }
 
   template <int dim>
@@ -134,7 +159,7 @@ namespace lithostress
           {
             values.reinit(cell);
             for (const Point<dim> &p : values.get_quadrature_points())
-              temperature_change->value(p, this->time());
+              initial_strain(p);
           }
     });
   }
@@ -144,7 +169,11 @@ namespace lithostress
   ThermalStrain<dim>::description() const
   {
     std::ostringstream out;
-    out << "thermal strain: Delta T = " << temperature_change->text()
+    out << "thermal strain: Delta T = "
+        << (temperature != nullptr
+              ? "T - " + std::to_string(reference_temperature) +
+                  " (Temperature/Model)"
+              : temperature_change->text())
         << " K, alpha = " << coefficient
         << (volumetric ? " /K (volumetric, linear strain alpha Delta T / 3)"
                        : " /K (linear)");

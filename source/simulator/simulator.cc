@@ -215,6 +215,8 @@ namespace lithostress
         model.boundary_parts.insert(part);
     model.length_scale = length_scale;
     model.reference    = reference.get();
+    temperature        = TemperatureSelector<dim>::create(prm, length_scale);
+    model.temperature  = temperature.get();
     loads.parse_parameters(prm, model);
     for (const auto &load : loads.loads())
       load->check_against_mesh(triangulation, fe_space->mapping());
@@ -225,9 +227,17 @@ namespace lithostress
                                                       materials,
                                                       plane_state,
                                                       initial_stresses);
-    temperature  = TemperatureSelector<dim>::create(prm, length_scale);
     if (temperature)
-      temperature->check_against_mesh(triangulation);
+      {
+        temperature->check_against_mesh(triangulation);
+        TemperatureMesh<dim> temperature_mesh;
+        temperature_mesh.triangulation = &triangulation;
+        temperature_mesh.mapping       = &fe_space->mapping();
+        for (const Material &material : materials.materials())
+          temperature_mesh.materials[material.name] = material.id;
+        temperature_mesh.boundary_parts = model.boundary_parts;
+        temperature->attach_mesh(temperature_mesh);
+      }
     stress_model->attach_temperature(temperature.get());
     prescribed_displacement.parse_parameters(prm, model);
     griffith.parse_parameters(prm, model.gravity);

@@ -23,6 +23,12 @@ namespace lithostress
 
   template <int dim>
   void
+  TemperatureModel<dim>::attach_mesh(const TemperatureMesh<dim> &)
+  {
+  }
+
+  template <int dim>
+  void
   PointwiseTemperature<dim>::check_against_mesh(
     const Triangulation<dim> &tria) const
   {

@@ -14,6 +14,7 @@
 #include <lithostress/materials/elastic_moduli.h>
 #include <lithostress/materials/initial_stress_source.h>
 #include <lithostress/materials/material.h>
+#include <lithostress/temperature/temperature_model.h>
 
 #include <map>
 #include <string>
@@ -38,6 +39,9 @@ namespace lithostress
     const ReferenceSolution<dim>             *reference    = nullptr;
     /** g and the height of zero depth of every gravity term. */
     GravityField gravity;
+    /** The section's temperature (`Temperature/Model`; null: none), for a
+     * load that reads it (a thermal strain from the temperature). */
+    const TemperatureModel<dim> *temperature = nullptr;
 
     /** The id of boundary part @p name; InputError naming @p entry if the
      * mesh has no such part. */

@@ -70,6 +70,10 @@ namespace lithostress
 
   private:
     std::unique_ptr<ParsedExpression<dim>> temperature_change;
+    /** With `Temperature change = temperature model`: ΔT = T − T_ref of
+     * the section's temperature (a closed form of position), else null. */
+    const PointwiseTemperature<dim> *temperature           = nullptr;
+    double                           reference_temperature = 0;
     /** α as given, and whether it is volumetric (α_lin = α/3). */
     double coefficient = 0;
     bool   volumetric  = false;

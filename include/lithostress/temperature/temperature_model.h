@@ -3,10 +3,12 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/grid/tria.h>
 
 #include <lithostress/base/plugin_registry.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,6 +16,25 @@
 namespace lithostress
 {
   using namespace dealii;
+
+  /**
+   * The mesh of a run as a temperature model whose field is solved on it
+   * sees it: the triangulation (refined, coarsened and loaded during the
+   * run), its mapping, and the names the input gives its materials and
+   * boundary parts.
+   */
+  template <int dim>
+  struct TemperatureMesh
+  {
+    /** The run's triangulation; it outlives the model's use. */
+    const Triangulation<dim> *triangulation = nullptr;
+    /** The mapping of the run's finite elements (exact curved geometry). */
+    const Mapping<dim> *mapping = nullptr;
+    /** Every material (`Materials/Names`) and its material id. */
+    std::map<std::string, types::material_id> materials;
+    /** The named boundary parts of the mesh and their boundary ids. */
+    std::map<std::string, types::boundary_id> boundary_parts;
+  };
 
   /**
    * The temperature of the cross section [K]: what the temperature-
@@ -50,6 +71,14 @@ namespace lithostress
      * field solved on the mesh) checks nothing here. */
     virtual void
     check_against_mesh(const Triangulation<dim> &tria) const;
+
+    /** Give the model the run's mesh (collective, once, after
+     * parse_parameters()): a model whose field lives on the mesh resolves
+     * its names of materials and boundaries (InputError naming the entry)
+     * and computes its field, again after every change of the mesh. A
+     * closed form does nothing. */
+    virtual void
+    attach_mesh(const TemperatureMesh<dim> &mesh);
   };
 
   /**
