@@ -115,21 +115,23 @@ namespace lithostress
         const auto colon = item.find(':');
         if (colon == std::string::npos)
           throw_input_error(entry,
-                            "has `" + item + "` where `name: value` is "
-                            "expected");
-        const std::string name = Utilities::trim(item.substr(0, colon));
+                            "has `" + item +
+                              "` where `name: value` is "
+                              "expected");
+        const std::string name  = Utilities::trim(item.substr(0, colon));
         const auto        found = mesh.materials.find(name);
         if (found == mesh.materials.end())
           throw_input_error(entry,
-                            "names `" + name + "`, which is no material of "
-                            "Materials/Names");
+                            "names `" + name +
+                              "`, which is no material of "
+                              "Materials/Names");
         values[found->second] = number(item.substr(colon + 1));
       }
     for (const auto &material : mesh.materials)
       if (values.count(material.second) == 0)
         throw_input_error(entry,
-                          "gives no value for the material `" +
-                            material.first + "`");
+                          "gives no value for the material `" + material.first +
+                            "`");
     return values;
   }
 
@@ -162,8 +164,10 @@ namespace lithostress
           for (const auto &part : mesh.boundary_parts)
             parts += (parts.empty() ? "" : ", ") + part.first;
           throw_input_error(entry + which,
-                            "is `" + name + "`, which is no boundary part of "
-                            "the mesh (it has: " + parts + ")");
+                            "is `" + name +
+                              "`, which is no boundary part of "
+                              "the mesh (it has: " +
+                              parts + ")");
         }
       return found->second;
     };
@@ -198,18 +202,18 @@ namespace lithostress
     DoFTools::extract_locally_relevant_dofs(*dof_handler, relevant);
     AffineConstraints<double> constraints(relevant);
     DoFTools::make_hanging_node_constraints(*dof_handler, constraints);
-    VectorTools::interpolate_boundary_values(
-      *mesh.mapping,
-      *dof_handler,
-      top_id,
-      Functions::ConstantFunction<dim>(top_temperature),
-      constraints);
-    VectorTools::interpolate_boundary_values(
-      *mesh.mapping,
-      *dof_handler,
-      base_id,
-      Functions::ConstantFunction<dim>(base_temperature),
-      constraints);
+    VectorTools::interpolate_boundary_values(*mesh.mapping,
+                                             *dof_handler,
+                                             top_id,
+                                             Functions::ConstantFunction<dim>(
+                                               top_temperature),
+                                             constraints);
+    VectorTools::interpolate_boundary_values(*mesh.mapping,
+                                             *dof_handler,
+                                             base_id,
+                                             Functions::ConstantFunction<dim>(
+                                               base_temperature),
+                                             constraints);
     constraints.close();
 
     DynamicSparsityPattern dsp(relevant);
@@ -219,14 +223,14 @@ namespace lithostress
     matrix.reinit(owned, owned, dsp, comm);
     TrilinosWrappers::MPI::Vector rhs(owned, comm), solution(owned, comm);
 
-    FEValues<dim>      fe_values(*mesh.mapping,
+    FEValues<dim>                        fe_values(*mesh.mapping,
                             fe,
                             QGauss<dim>(fe.degree + 1),
                             update_values | update_gradients |
                               update_JxW_values);
-    const unsigned int n = fe.n_dofs_per_cell();
-    FullMatrix<double> cell_matrix(n, n);
-    Vector<double>     cell_rhs(n);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
+    Vector<double>                       cell_rhs(n);
     std::vector<types::global_dof_index> dofs(n);
     for (const auto &cell : dof_handler->active_cell_iterators())
       if (cell->is_locally_owned())

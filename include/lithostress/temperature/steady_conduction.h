@@ -78,13 +78,13 @@ namespace lithostress
     std::string top_name, base_name;
     double      top_temperature = 0, base_temperature = 0;
 
-    TemperatureMesh<dim>                  mesh;
-    std::map<types::material_id, double>  conductivity, heat_production;
-    types::boundary_id                    top_id = 0, base_id = 0;
-    FE_Q<dim>                             fe{2};
-    std::unique_ptr<DoFHandler<dim>>      dof_handler;
-    TrilinosWrappers::MPI::Vector         temperature;
-    unsigned int                          iterations = 0;
+    TemperatureMesh<dim>                     mesh;
+    std::map<types::material_id, double>     conductivity, heat_production;
+    types::boundary_id                       top_id = 0, base_id = 0;
+    FE_Q<dim>                                fe{2};
+    std::unique_ptr<DoFHandler<dim>>         dof_handler;
+    TrilinosWrappers::MPI::Vector            temperature;
+    unsigned int                             iterations = 0;
     std::vector<boost::signals2::connection> connections;
   };
 } // namespace lithostress
