@@ -55,7 +55,7 @@ namespace lithostress
         const StrengthEnvelope envelope =
           stress_model.rheology(v.material_id)
             .strength_envelope(std::isnan(v.temperature) ? 0.0 : v.temperature,
-                               -mean,
+                               stress_model.reference_pressure(v.point) - mean,
                                strain_rate);
         if (std::isinf(envelope.brittle) && std::isinf(envelope.ductile))
           continue;

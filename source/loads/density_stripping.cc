@@ -97,6 +97,23 @@ namespace lithostress
   }
 
   template <int dim>
+  double
+  DensityStripping<dim>::reference_pressure(const Point<dim> &p) const
+  {
+    const double depth    = depth_origin - p[dim - 1];
+    double       top      = column_top;
+    double       pressure = 0;
+    for (unsigned int k = 0; k < bottoms.size() && top < depth; ++k)
+      {
+        const bool   last   = k + 1 == bottoms.size();
+        const double bottom = last ? std::max(depth, bottoms[k]) : bottoms[k];
+        pressure += densities[k] * (std::min(depth, bottom) - top);
+        top = bottom;
+      }
+    return acceleration * pressure;
+  }
+
+  template <int dim>
   void
   DensityStripping<dim>::check_against_mesh(const Triangulation<dim> &tria,
                                             const Mapping<dim> &) const

@@ -37,9 +37,20 @@ namespace lithostress
         rheology_of.emplace(m.id, std::move(law));
       }
     prm.leave_subsection();
+    all_sources = sources;
     for (const InitialStressSource<dim> *source : sources)
       if (source->has_initial_stress())
         initial_stress_loads.push_back(source);
+  }
+
+  template <int dim>
+  double
+  StressModel<dim>::reference_pressure(const Point<dim> &p) const
+  {
+    double pressure = 0;
+    for (const InitialStressSource<dim> *source : all_sources)
+      pressure += source->reference_pressure(p);
+    return pressure;
   }
 
   template <int dim>
@@ -127,6 +138,7 @@ namespace lithostress
   {
     const Rheology<dim> &law = *rheology_of.at(id);
     in.initial_stress = initial_stress(id, in.position, law.moduli_for(in));
+    in.pressure       = reference_pressure(in.position);
     law.evaluate(in, out);
   }
 

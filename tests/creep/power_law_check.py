@@ -25,6 +25,12 @@ s the 3-D deviator, tau = tau_II = sqrt(s:s/2), A_T = A exp(-E/(R T))):
    log(r_k+1/r_k)/log(r_k/r_k-1) >= 1.7, where a linear iteration gives 1
    and the secant method 1.62),
    with at most 8 iterations per step.
+1b. The activation volume: P in exp(-(E + P V)/(R T)) is the full
+   stress's pressure plus, in a density-stripped model, the reference
+   column's lithostatic pressure (doc/equations.md §12): the relaxation of
+   a block under a column of 441 MPa with V = 1e-5 m^3/mol against the
+   closed form with A_T = A exp(-(E + P V)/(R T)), to 0.5 %; without
+   P_ref the closed form misses by more than ten times that.
 """
 import math
 import os
@@ -134,6 +140,36 @@ for T, tolerance in ((1200, 1e-4), (1200, 1e-5), (1100, 1e-4)):
 check(errors[(1200, 1e-4)] / errors[(1200, 1e-5)] >= 3,
       "the relaxation's error falls with the step control's tolerance: %.2e (1e-4) -> %.2e (1e-5)"
       % (errors[(1200, 1e-4)], errors[(1200, 1e-5)]))
+
+# 1b. The pressure of the activation volume includes the reference column's
+# lithostatic pressure in a density-stripped model: the block (density 0)
+# at depths 15-20 km (Gravity field/Depth origin = 20 km) under a column of
+# 3000 kg/m^3 to 15 km and 0 below, so that its stripped body force is zero
+# and P_ref = 3000 g 15 km everywhere in it.
+V = 1e-5
+P_ref = 3000 * 9.81 * 15e3
+_, rows, _ = simulate("activation_volume",
+                      ["Temperature/Function/Expression=1200",
+                       "Materials/rock/Dislocation creep activation volume=%g" % V,
+                       "Materials/rock/Density=0", "Loads/Gravity/Enabled=false",
+                       "Gravity field/Depth origin=20",
+                       "Loads/Density stripping/Reference column=0, 15: 3000; 15, 25: 0"])
+tau0 = tau_of(rows[0])
+P = P_ref - (rows[0]["s_xx"] + rows[0]["s_yy"] + rows[0]["s_zz"]) / 3
+
+
+def relaxation_error(pressure):
+    a_p = a_t(1200) * math.exp(-pressure * V / (R * 1200))
+    return max(abs(tau_of(r) - (tau0 ** (1 - n) + (n - 1) * 2 * G * a_p * r["time"]) ** (1 / (1 - n)))
+               / tau_of(r) for r in rows)
+
+
+with_reference, without_reference = relaxation_error(P), relaxation_error(P - P_ref)
+check(with_reference <= 5e-3,
+      "activation volume %g m^3/mol under a stripped column: the relaxation with P = P_ref + P_stress "
+      "= %.4g MPa, largest relative error %.2e (at most 0.5 %%)" % (V, P / 1e6, with_reference))
+check(without_reference >= 10 * 5e-3,
+      "the reference pressure matters: without it the closed form is off by %.2e" % without_reference)
 
 # 2. n = 1: a linear viscosity and linear diffusion creep are Maxwell's law.
 eta = 1.262304e21

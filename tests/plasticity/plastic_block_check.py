@@ -34,6 +34,10 @@ The stress is sigma = -P 1 + tau dev(E)/e_II. Asserted to 1e-9 of tau:
    root of tau/(2 eta) + A tau^n = 1e-15 (bisection here), strength their
    minimum, each to 1e-9; the ParaView record lists effective_viscosity,
    strain_rate_II, yielding and plastic_strain.
+7. Density stripping: the brittle strength adds the reference column's
+   lithostatic pressure P_ref(d) = g sum rho_i h_i (a column of three
+   densities whose interval bottoms cross the block) to the pressure of
+   the stripped stress, to 1e-9.
 """
 import math
 import os
@@ -205,6 +209,30 @@ for r in profile:
 check(len(profile) == 101 and worst <= 1e-9,
       "strength envelope at %d profile points: tau_II, brittle %.6g Pa, ductile %.6g Pa and their minimum "
       "to %.1e" % (len(profile), profile[0]["strength_brittle"], ductile, worst))
+
+# 7. Under density stripping the yield pressure adds the reference column's
+# lithostatic pressure: the block at depths 15-20 km (Gravity field/Depth
+# origin = 20 km) under a column of three densities whose bottoms at 16 and
+# 18 km cross it; strength_brittle = C cos(phi) + (P_ref(d) + P) sin(phi).
+COLUMN = ((0.0, 16e3, 2700.0), (16e3, 18e3, 3000.0), (18e3, 25e3, 3300.0))
+
+
+def column_pressure(d):
+    return 9.81 * sum(rho * max(0.0, min(d, bottom) - top) for top, bottom, rho in COLUMN)
+
+
+stripped = os.path.abspath("output_plastic_block_stripped")
+run(PRM, stripped, 1, ["Output/Stress-depth profiles=5", "Loads/Gravity/Enabled=false",
+                       "Gravity field/Depth origin=20",
+                       "Loads/Density stripping/Reference column=" +
+                       "; ".join("%g, %g: %g" % (t / 1e3, b / 1e3, rho) for t, b, rho in COLUMN)])
+worst = 0.0
+for r in read_csv(os.path.join(stripped, "stress_depth_x5.csv")):
+    mean = (r["sigma_xx"] + r["sigma_yy"] + r["sigma_zz"]) / 3
+    brittle = C0 * math.cos(PHI0) + (column_pressure(20e3 - r["y"]) - mean) * math.sin(PHI0)
+    worst = max(worst, abs(r["strength_brittle"] - brittle) / brittle)
+check(worst <= 1e-9, "density stripping: strength_brittle with the column's pressure (%.4g to %.4g MPa) "
+      "to %.1e" % (column_pressure(15e3) / 1e6, column_pressure(20e3) / 1e6, worst))
 record = open(os.path.join(out, "solution_005.pvtu")).read()
 fields = ("effective_viscosity", "strain_rate_II", "yielding", "plastic_strain")
 check(all('Name="%s"' % f in record for f in fields),

@@ -66,6 +66,13 @@ namespace lithostress
     double
     reference_density(const Point<dim> &p) const;
 
+    /** The reference column's lithostatic pressure at @p p, g ∫ ρ_ref dd
+     * from the column's top to the depth of @p p (0 above the top; the
+     * deepest interval continued below the column): the pressure that the
+     * stripped stresses leave out and that creep and yield laws add. */
+    double
+    reference_pressure(const Point<dim> &p) const override;
+
     /** g [m s⁻²]. */
     double acceleration = 9.81;
 

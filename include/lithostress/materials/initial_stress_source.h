@@ -44,6 +44,19 @@ namespace lithostress
                        const ElasticModuli<dim> &moduli,
                        SymmetricTensor<2, dim>  &stress,
                        double                   &sigma_zz) const = 0;
+
+    /**
+     * The pressure [Pa, compression positive] at @p p of a reference state
+     * that the computed stresses are relative to and that laws reading the
+     * pressure must add (density stripping: the reference column's
+     * lithostatic pressure, doc/equations.md §12); 0 by default.
+     */
+    virtual double
+    reference_pressure(const Point<dim> &p) const
+    {
+      (void)p;
+      return 0;
+    }
   };
 } // namespace lithostress
 

@@ -291,6 +291,12 @@ namespace lithostress
       return !initial_stress_loads.empty();
     }
 
+    /** The pressure [Pa] of the reference state the stresses are relative
+     * to at @p p (every load's InitialStressSource::reference_pressure()):
+     * what a law that reads the pressure adds to that of the stress. */
+    double
+    reference_pressure(const Point<dim> &p) const;
+
     const MaterialLibrary &materials;
     const PlaneState       plane_state;
 
@@ -308,6 +314,8 @@ namespace lithostress
     HistoryLayout                                 layout;
     std::vector<double>                           zero_history;
     std::vector<const InitialStressSource<dim> *> initial_stress_loads;
+    /** Every load, for reference_pressure(). */
+    std::vector<const InitialStressSource<dim> *> all_sources;
     const CellHistory<dim>                       *cell_history  = nullptr;
     const CellHistory<dim>                       *linearisation = nullptr;
     const CellHistory<dim>                       *flow_state    = nullptr;
