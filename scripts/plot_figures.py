@@ -1032,6 +1032,61 @@ def plot_stress_depth(path, settings):
     return out
 
 
+def plot_strength_envelope(path, settings):
+    """The yield-strength envelope of a stress-depth profile (Goetze & Evans
+    1979; doc/equations.md section 13): tau_II of the model against depth
+    with the brittle (Drucker-Prager) and ductile (creep at the Output/
+    Strength envelope strain rate) strengths and their minimum, where the
+    profile's CSV has them (Rheology = visco-elasto-plastic); the depths
+    where tau_II reaches the strength (yielding) shaded."""
+    label = re.match(r"stress_depth_(.+)\.csv$", os.path.basename(path)).group(1)
+    t = read_table(path, ["depth"], ("tau_II", "strength_brittle", "strength_ductile", "strength"))
+    if "strength" not in t or not np.isfinite(t["strength"]).any():
+        return None
+    order = np.argsort(t["depth"], kind="stable")
+    t = {c: v[order] for c, v in t.items()}
+    ls, unit = settings["length_scale"], settings["length_unit"]
+    rate = read_prm(os.path.join(directory_of(path), "parameters.prm")).get(
+        "Output/Strength envelope strain rate", "1e-15")
+    depth = t["depth"] / ls
+    fig, ax = plt.subplots(figsize=(5.5, 6.5))
+    for col, name, style, colour, width in (
+            ("strength_brittle", "brittle: C cos\u03c6 + P sin\u03c6", "--", "#8c564b", 1.2),
+            ("strength_ductile", "ductile: creep at %s s$^{-1}$" % rate, "-.", "#1f77b4", 1.2),
+            ("strength", "strength (their minimum)", "-", "black", 2.0),
+            ("tau_II", "model \u03c4$_{II}$", "-", "#d62728", 1.6)):
+        if col in t and np.isfinite(t[col]).any():
+            ax.plot(t[col] / 1e6, depth, style, color=colour, linewidth=width, label=name)
+    if "tau_II" in t:
+        at_strength = np.isfinite(t["tau_II"]) & np.isfinite(t["strength"]) & \
+            (t["tau_II"] >= (1 - 1e-3) * t["strength"])
+        brittle = t.get("strength_brittle", np.full_like(depth, np.inf))
+        ductile = t.get("strength_ductile", np.full_like(depth, np.inf))
+        brittle_side = np.nan_to_num(brittle, nan=np.inf) <= np.nan_to_num(ductile, nan=np.inf)
+        for where, colour, name in ((at_strength & brittle_side, "#f2c4c4", "yielding (\u03c4$_{II}$ at C cos\u03c6 + P sin\u03c6)"),
+                                    (at_strength & ~brittle_side, "#c6dbef",
+                                     "creeping at the reference rate or faster")):
+            if where.any():
+                ax.fill_betweenx(depth, 0, t["tau_II"] / 1e6, where=where, color=colour, alpha=0.8,
+                                 linewidth=0, label=name)
+    finite = [v for c in ("tau_II", "strength") if c in t for v in t[c][np.isfinite(t[c])]]
+    if finite:
+        ax.set_xlim(0, 1.1 * max(finite) / 1e6)
+    ax.set_xlabel("second invariant of the deviatoric stress [MPa]")
+    ax.set_ylabel("depth [%s]" % unit)
+    dmin, dmax = float(np.nanmin(depth)), float(np.nanmax(depth))
+    if dmax > dmin:
+        ax.set_ylim(dmax, dmin)
+    ax.grid(True, linewidth=0.3)
+    ax.legend(fontsize=8, loc="lower right")
+    ax.set_title(titled(settings, "strength envelope '%s'" % label), fontsize=10)
+    fig.tight_layout()
+    out = os.path.join(directory_of(path), "strength_envelope_%s.png" % label)
+    save_complete(fig, out)
+    plt.close(fig)
+    return out
+
+
 def directory_of(path):
     return os.path.dirname(path) or "."
 
@@ -1101,6 +1156,8 @@ def main():
             ("stresses at the tips", lambda: plot_tip_stresses(directory, settings))]
     for path in sorted(glob.glob(os.path.join(glob.escape(directory), "stress_depth_*.csv"))):
         jobs.append((os.path.basename(path), lambda p=path: plot_stress_depth(p, settings)))
+        jobs.append(("strength envelope of " + os.path.basename(path),
+                     lambda p=path: plot_strength_envelope(p, settings)))
     status = 0
     for name, job in jobs:
         try:

@@ -542,6 +542,10 @@ namespace lithostress
         record.error_estimate < growth_margin * settings.tolerance &&
         record.dt >= 0.99 * dt)
       dt *= 2;
+    // Fixed steps halved for Newton's iteration grow back by doublings
+    // to the First time step.
+    if (!settings.adaptive && dt < settings.first_step)
+      dt = std::min(2 * dt, settings.first_step);
     const int output = settings.output_index(t);
     if (output >= 0)
       write_output(output);

@@ -17,6 +17,7 @@
 #include <lithostress/solvers/preconditioned_cg.h>
 
 #include <map>
+#include <optional>
 
 namespace lithostress
 {
@@ -106,6 +107,17 @@ namespace lithostress
                                                         {id},
                                                         mask);
 
+      // A law whose tangent varies in space: every level takes its cells'
+      // averaged tangents (multigrid_tools::level_tangents()).
+      using LevelTangents =
+        decltype(multigrid_tools::level_tangents(problem, 1u));
+      std::optional<LevelTangents> level_tangent;
+      if (!problem.stress_model.uniform_tangents())
+        on_all_ranks(dof_handler.get_communicator(), [&]() {
+          level_tangent.emplace(
+            multigrid_tools::level_tangents(problem, degree + 1));
+        });
+
       level_operators.resize(0, n_levels - 1);
       for (unsigned int level = 0; level < n_levels; ++level)
         {
@@ -129,6 +141,10 @@ namespace lithostress
                                             constrained_dofs,
                                             level);
           level_operators[level].set_cell_moduli(material_moduli);
+          if (level_tangent)
+            on_all_ranks(dof_handler.get_communicator(), [&]() {
+              level_operators[level].set_point_tangents(*level_tangent);
+            });
           level_operators[level].set_vertical_springs(springs);
         }
       report.phases.emplace_back("matrix-free set-up (levels)",

@@ -58,7 +58,9 @@ namespace lithostress
                       "repeat a step whose estimate exceeds the Creep strain "
                       "tolerance with a shorter one, double the step while "
                       "the estimate stays below a quarter (BDF2: an eighth) "
-                      "of it. false = constant First time step.");
+                      "of it. false = constant First time step (a step "
+                      "halved for Newton's iteration grows back to it by "
+                      "doublings).");
     prm.declare_entry("Creep strain tolerance",
                       "1e-3",
                       Patterns::Double(0),

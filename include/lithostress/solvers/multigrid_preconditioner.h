@@ -179,6 +179,59 @@ namespace lithostress
       };
     }
 
+    /**
+     * The tangent of a level cell for the multigrid's level operators of a
+     * law whose tangent varies in space: the volume average of
+     * point_tangents() over the cell's active descendants (each active
+     * cell's mean over its quadrature points), so that yielding zones and
+     * weak creeping regions are soft on every level as on the active mesh.
+     * A level cell some of whose descendants this rank does not own (near
+     * a partition boundary) takes its material's step moduli, as before;
+     * the preconditioner then depends on the partition, the solution does
+     * not. The second argument (the quadrature point) is ignored: the
+     * tangent is constant per level cell.
+     */
+    template <int dim>
+    auto
+    level_tangents(const DiscreteProblem<dim> &problem,
+                   const unsigned int          n_points_1d)
+    {
+      using Sum = std::pair<SymmetricTensor<4, dim>, double>;
+      const Triangulation<dim> &tria = problem.dof_handler.get_triangulation();
+      auto sums = std::make_shared<std::vector<std::map<unsigned int, Sum>>>(
+        tria.n_levels());
+      auto               tangent = point_tangents(problem, n_points_1d);
+      const unsigned int n_q     = Utilities::pow(n_points_1d, dim);
+      for (const auto &cell : problem.dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            SymmetricTensor<4, dim> mean;
+            for (unsigned int q = 0; q < n_q; ++q)
+              mean += tangent(cell, q);
+            mean /= n_q;
+            const double volume = cell->measure();
+            for (typename Triangulation<dim>::cell_iterator c(cell);;
+                 c = c->parent())
+              {
+                Sum &sum = (*sums)[c->level()][c->index()];
+                sum.first += volume * mean;
+                sum.second += volume;
+                if (c->level() == 0)
+                  break;
+              }
+          }
+      return [&problem, sums](const auto &cell,
+                              const unsigned int) -> SymmetricTensor<4, dim> {
+        const auto &level = (*sums)[cell->level()];
+        const auto  found = level.find(cell->index());
+        if (found != level.end() &&
+            found->second.second >= (1 - 1e-3) * cell->measure())
+          return found->second.first / found->second.second;
+        return problem.stress_model.step_moduli(cell->material_id())
+          .stiffness();
+      };
+    }
+
     /** MatrixFree flags of the elasticity operator: gradients and JxW in
      * cells, values, normals and JxW on boundary faces if there are
      * @p springs. */
