@@ -237,6 +237,16 @@ namespace lithostress
 
   template <int dim>
   bool
+  StressModel<dim>::may_be_unsymmetric() const
+  {
+    for (const auto &[id, law] : rheology_of)
+      if (!law->symmetric_tangent())
+        return true;
+    return false;
+  }
+
+  template <int dim>
+  bool
   StressModel<dim>::has_nonlinear_material() const
   {
     for (const auto &[id, law] : rheology_of)

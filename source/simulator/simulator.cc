@@ -265,7 +265,8 @@ namespace lithostress
       loads,
       prescribed_displacement.has_rigid_components()
         ? "a `rigid` boundary component ties DoFs along a whole edge"
-        : "");
+        : "",
+      stress_model->may_be_unsymmetric());
     memory_budget.parse_parameters(prm, communicator);
     cycles.set_memory_budget(memory_budget);
     problem = std::make_unique<ElasticProblem<dim>>(

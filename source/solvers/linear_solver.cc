@@ -75,7 +75,9 @@ namespace lithostress
       "automatic",
       Patterns::Selection("automatic|" + LinearSolverRegistry<dim>::names()),
       LinearSolverRegistry<dim>::documentation() +
-        "; automatic: the matrix-free multigrid wherever it applies, "
+        "; automatic: the matrix-free multigrid wherever it applies (but "
+        "not to a non-associated flow rule, Dilation angle below Friction "
+        "angle, whose unsymmetric tangent it preconditions badly), "
         "otherwise the direct solver on one rank up to Direct solver limit "
         "DoFs and AMG above it and on several ranks.");
     prm.declare_entry("Relative tolerance",
@@ -122,7 +124,8 @@ namespace lithostress
   LinearSolverSelector<dim>::create(ParameterHandler              &prm,
                                     const FiniteElementSpace<dim> &fe_space,
                                     const LoadCollection<dim>     &loads,
-                                    const std::string &constraint_obstacle)
+                                    const std::string &constraint_obstacle,
+                                    const bool         unsymmetric_tangent)
   {
     prm.enter_subsection("Solver");
     std::string type = prm.get("Type");
@@ -144,7 +147,8 @@ namespace lithostress
       }
     const bool automatic = type == "automatic";
     if (automatic)
-      type = multigrid_applies ? "matrix-free multigrid" : "AMG";
+      type = multigrid_applies && !unsymmetric_tangent ? "matrix-free multigrid"
+                                                       : "AMG";
 
     std::unique_ptr<LinearSolver<dim>> solver =
       LinearSolverRegistry<dim>::find(type, "Solver/Type")

@@ -191,6 +191,12 @@ namespace lithostress
     bool
     symmetric_operator() const;
 
+    /** Whether some material's law can have a tangent without the major
+     * symmetry once it is linearised (a non-associated flow rule): a
+     * property of the input, known before anything is solved. */
+    bool
+    may_be_unsymmetric() const;
+
     /** Whether some material's law is non-linear: the time loop's steps
      * are then Newton iterations. */
     bool

@@ -245,12 +245,18 @@ namespace lithostress
     /** The solver for a model with element space @p fe_space and loads
      * @p loads; throws InputError if the requested solver cannot handle it.
      * A non-empty @p constraint_obstacle says why the model's constraints
-     * rule out the matrix-free multigrid (e.g. a rigid edge). */
+     * rule out the matrix-free multigrid (e.g. a rigid edge). With
+     * @p unsymmetric_tangent (a non-associated flow rule) `automatic`
+     * does not choose the multigrid: GMRES with it stops converging as
+     * yielding spreads (doc/performance.md, "A lithosphere that creeps and
+     * yields"), so the direct solver on one rank and AMG on several are
+     * taken; the multigrid can still be chosen by name. */
     static std::unique_ptr<LinearSolver<dim>>
     create(ParameterHandler              &prm,
            const FiniteElementSpace<dim> &fe_space,
            const LoadCollection<dim>     &loads,
-           const std::string             &constraint_obstacle = "");
+           const std::string             &constraint_obstacle = "",
+           const bool                     unsymmetric_tangent = false);
   };
 } // namespace lithostress
 
