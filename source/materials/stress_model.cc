@@ -1,4 +1,5 @@
 #include <lithostress/base/input_error.h>
+#include <lithostress/materials/law_entries.h>
 #include <lithostress/materials/stress_model.h>
 
 #include <algorithm>
@@ -23,6 +24,9 @@ namespace lithostress
                                       "Materials/" + m.name + "/Rheology")
             .create();
         prm.enter_subsection(m.name);
+        refuse_entries_of_other_laws(prm,
+                                     m.rheology,
+                                     "Materials/" + m.name + "/");
         law->parse_parameters(prm, m, plane_state);
         prm.leave_subsection();
         if (m.viscosity > 0 && !law->creeps())

@@ -32,6 +32,8 @@ expected = {
     "stripping_with_gravity": "Gravity",
     "temperature_change_unparsable": "Temperature change",
     "conduction_unknown_material": "Thermal conductivity",
+    "entry_of_another_law": "Materials/rock/Cohesion",
+    "nonlinear_rock_with_frictional_fault": "Materials/lower/Rheology",
     "conduction_unknown_boundary": "Top boundary",
     "conduction_negative_heat_production": "Radiogenic heat production",
     "thermal_coefficient_type_missing": "Coefficient type",
