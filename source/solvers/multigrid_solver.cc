@@ -209,6 +209,25 @@ namespace lithostress
       unsigned long long kept_version = 0;
     };
 
+    /** The time of one product with the active operator (the fastest of
+     * 20, into @p dst) and with the finest level's, for statistics.json. */
+    template <typename Operator, typename Preconditioner, typename Vector>
+    void
+    time_products(SolverReport   &report,
+                  const Operator &op,
+                  Preconditioner &preconditioner,
+                  Vector         &dst,
+                  const Vector   &src)
+    {
+      const MPI_Comm communicator = src.get_mpi_communicator();
+      Timer          benchmark(communicator, true);
+      report.matrix_vector_product_time =
+        fastest_of(20, communicator, [&]() { op.vmult(dst, src); });
+      report.level_matrix_vector_product_time =
+        preconditioner.time_finest_level_product();
+      report.benchmark_time = benchmark.wall_time();
+    }
+
     template <int dim, int degree, typename number>
     SolverReport
     MultigridImplementation<dim, degree, number>::solve(
@@ -250,8 +269,7 @@ namespace lithostress
                                               springs,
                                               vectorized_operator_built());
           // A law whose tangent varies in space: the active operator takes
-          // it at each quadrature point (isotropic or not); the levels, a
-          // preconditioner, keep each material's step moduli.
+          // it at each quadrature point (the levels their cells' averages).
           if (!problem.stress_model.uniform_tangents())
             on_all_ranks(communicator, [&]() {
               system_operator->set_point_tangents(
@@ -330,19 +348,10 @@ namespace lithostress
                               preconditioner->memory_consumption()),
                             communicator);
 
+      // Into the right-hand side, which the solve has finished with, so
+      // that the measurement does not raise the peak memory.
       if (settings.time_matrix_vector_product)
-        {
-          // Into the right-hand side, which the solve has finished with, so
-          // that the measurement does not raise the peak memory.
-          Timer benchmark(communicator, true);
-          report.matrix_vector_product_time =
-            fastest_of(20, communicator, [&]() {
-              system_operator->vmult(rhs, x);
-            });
-          report.level_matrix_vector_product_time =
-            preconditioner->time_finest_level_product();
-          report.benchmark_time = benchmark.wall_time();
-        }
+        time_products(report, *system_operator, *preconditioner, rhs, x);
 
       // Keep the set-up for the next solve of the same operator, or
       // release the hierarchy, the operator and the vectors CG and the
