@@ -12,10 +12,10 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <lithostress/base/input_error.h>
+#include <lithostress/base/parameter_file.h>
 #include <lithostress/temperature/steady_conduction.h>
 
-#include <cmath>
-#include <sstream>
+#include <limits>
 
 namespace lithostress
 {
@@ -93,24 +93,14 @@ namespace lithostress
     const TemperatureMesh<dim> &mesh)
   {
     std::map<types::material_id, double> values;
-    const auto                           number = [&](const std::string &s) {
-      double             value = 0;
-      std::istringstream in(Utilities::trim(s));
-      std::string        rest;
-      if (!(in >> value) || (in >> rest) || !std::isfinite(value))
-        throw_input_error(entry,
-                          "has `" + Utilities::trim(s) +
-                            "` where a number is expected");
-      return value;
-    };
     if (text.find(':') == std::string::npos)
       {
-        const double value = number(text);
+        const double value = parse_number(text, entry);
         for (const auto &material : mesh.materials)
           values[material.second] = value;
         return values;
       }
-    for (const std::string &item : Utilities::split_string_list(text, ','))
+    for (const std::string &item : split_list(text))
       {
         const auto colon = item.find(':');
         if (colon == std::string::npos)
@@ -125,7 +115,7 @@ namespace lithostress
                             "names `" + name +
                               "`, which is no material of "
                               "Materials/Names");
-        values[found->second] = number(item.substr(colon + 1));
+        values[found->second] = parse_number(item.substr(colon + 1), entry);
       }
     for (const auto &material : mesh.materials)
       if (values.count(material.second) == 0)
