@@ -28,6 +28,9 @@ Every input is optional: a figure is made when its data exist, and one line
                                                                     each output time)
   fault_summary.json with a tip      upper/lower_tip_depth_m        principal_stresses_tips.png
                                                                     (the crosses around the fault)
+  principal_stresses.csv with        yielding, deviatoric_xx        yielding_zones.png
+  yielding (visco-elasto-plastic)    [tau_II, strength,             (scripts/yielding_figure.py)
+                                     temperature]
 
 figures.json, e.g. {"length_unit": "km", "length_scale": 1000.0,
 "title": "plate flexure", "stress_unit_scale": 1e6}: length_scale is metres
@@ -80,6 +83,7 @@ try:
     from matplotlib.collections import LineCollection
     from matplotlib.patches import Rectangle
     import numpy as np
+    import yielding_figure
 except ImportError:
     sys.stderr.write("plot_figures: matplotlib is missing (apt install python3-matplotlib); no figures made\n")
     sys.exit(0)
@@ -1153,7 +1157,9 @@ def main():
             ("point history", lambda: plot_point_history(directory, settings)),
             ("fault", lambda: plot_faults(directory, settings)),
             ("fault history", lambda: plot_fault_history(directory, settings)),
-            ("stresses at the tips", lambda: plot_tip_stresses(directory, settings))]
+            ("stresses at the tips", lambda: plot_tip_stresses(directory, settings)),
+            ("yielding zones", lambda: yielding_figure.plot_yielding(
+                directory, settings, read_table, save_complete, titled, plt))]
     for path in sorted(glob.glob(os.path.join(glob.escape(directory), "stress_depth_*.csv"))):
         jobs.append((os.path.basename(path), lambda p=path: plot_stress_depth(p, settings)))
         jobs.append(("strength envelope of " + os.path.basename(path),

@@ -26,7 +26,8 @@ namespace lithostress
                       "1e-15",
                       Patterns::Double(0),
                       "The strain rate [1/s] of the strength envelope in "
-                      "the stress-depth profiles of rocks that yield or "
+                      "the stress-depth profiles and in the figures' "
+                      "principal_stresses.csv, where rocks yield or "
                       "creep (Rheology = visco-elasto-plastic): columns "
                       "tau_II, strength_brittle, strength_ductile and their "
                       "minimum, strength (Pa; empty where a rock has no "

@@ -83,6 +83,10 @@ namespace lithostress
       std::any_of(samples.begin(), samples.end(), [](const auto &sample) {
         return !std::isnan(sample.tau_ii);
       });
+    const bool with_yielding =
+      std::any_of(samples.begin(), samples.end(), [](const auto &sample) {
+        return sample.value.inside && !std::isnan(sample.value.yielding);
+      });
     // An infinite strength (no such branch) is an empty field.
     const auto strength = [](std::ostream &out, const double value) {
       if (std::isfinite(value))
@@ -95,7 +99,10 @@ namespace lithostress
            "griffith_C,griffith_regime,fracture_angle"
         << (with_temperature ? ",temperature" : "")
         << (with_strength ? ",tau_II,strength_brittle,strength_ductile,"
-                            "strength\n"
+                            "strength"
+                          : "")
+        << (with_yielding ? ",plastic_strain,yielding,effective_viscosity,"
+                            "strain_rate_II\n"
                           : "\n")
         << std::setprecision(10);
     for (const StressSample<dim> &sample : samples)
@@ -133,6 +140,15 @@ namespace lithostress
               strength(out,
                        std::min(sample.brittle_strength,
                                 sample.ductile_strength));
+            }
+          // Empty where the point's material keeps no plastic strain.
+          if (with_yielding)
+            {
+              out << ',';
+              if (!std::isnan(v.plastic_strain))
+                out << v.plastic_strain;
+              out << ',' << v.yielding << ',' << v.effective_viscosity << ','
+                  << v.strain_rate_ii;
             }
           out << '\n';
         }

@@ -24,6 +24,7 @@ namespace lithostress
                       Patterns::Anything(),
                       "The force vector at each point: `fx1, fy1; fx2, fy2` "
                       "[N/m], y up (a downward load has negative fy).");
+    TimeFactor::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -39,6 +40,7 @@ namespace lithostress
                                    model.length_scale);
     const auto f =
       parse_point_list<dim>(prm.get("Forces"), where + "Forces", 1.0);
+    time_factor.parse_parameters(prm, where + "Time factor");
     prm.leave_subsection();
     if (f.size() != points.size())
       throw_input_error(where + "Forces",
@@ -70,6 +72,8 @@ namespace lithostress
   {
     const MPI_Comm     comm = dof_handler.get_communicator();
     const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    // On every rank: a factor that is not finite is an error on all.
+    const double factor = time_factor.value(this->time());
     for (unsigned int k = 0; k < points.size(); ++k)
       {
         // The nearest vertex of an owned cell; the rank with the smallest
@@ -103,7 +107,7 @@ namespace lithostress
         for (unsigned int d = 0; d < dim; ++d)
           {
             dofs[d]   = best->vertex_dof_index(best_vertex, d, fe_index);
-            values[d] = forces[k][d];
+            values[d] = factor * forces[k][d];
           }
         constraints.distribute_local_to_global(values, dofs, rhs);
       }
@@ -118,6 +122,8 @@ namespace lithostress
     for (unsigned int k = 0; k < points.size(); ++k)
       out << (k == 0 ? " " : "; ") << forces[k] << " at (" << points[k]
           << ") m";
+    if (!time_factor.is_one())
+      out << ", times " << time_factor.text();
     return out.str();
   }
 

@@ -46,6 +46,7 @@ namespace lithostress
                       Patterns::Double(),
                       "Dip I of the pull [degrees], 0 < I <= 90: F_x = P / "
                       "tan(I) towards +x (down-dip), F_y = -P.");
+    TimeFactor::declare_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -62,6 +63,7 @@ namespace lithostress
     const double      dip_degrees  = prm.get_double("Dip");
     const std::string profile_text = prm.get("Profile");
     const std::string constants    = prm.get("Constants");
+    time_factor.parse_parameters(prm, where + "Time factor");
     prm.leave_subsection();
     if (!enabled)
       return false;
@@ -106,7 +108,7 @@ namespace lithostress
     Tensor<1, dim> f;
     f[0]       = dip < 0.5 * numbers::PI ? vertical_pull / std::tan(dip) : 0;
     f[dim - 1] = -vertical_pull;
-    return f;
+    return time_factor.value(this->time()) * f;
   }
 
   template <int dim>
@@ -159,7 +161,8 @@ namespace lithostress
     out << "slab pull on " << part_name << " (dip " << dip * 180 / numbers::PI
         << " deg, vertical "
         << (balancing ? "balancing the other loads" : "given") << ", profile "
-        << profile->text() << ")";
+        << profile->text()
+        << (time_factor.is_one() ? "" : ", times " + time_factor.text()) << ")";
     return out.str();
   }
 

@@ -3,8 +3,8 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <lithostress/base/input_error.h>
-#include <lithostress/postprocessors/figures.h>
 #include <lithostress/base/output_file.h>
+#include <lithostress/postprocessors/figures.h>
 
 #include <cmath>
 #include <cstdio>
@@ -61,7 +61,8 @@ namespace lithostress
                            const FiniteElementSpace<dim>       &fe_space,
                            const StressModel<dim>              &stress_model,
                            const GriffithFailure               &griffith,
-                           const TrilinosWrappers::MPI::Vector &solution) const
+                           const TrilinosWrappers::MPI::Vector &solution,
+                           const double envelope_strain_rate) const
   {
     if (!enabled)
       return;
@@ -128,8 +129,10 @@ namespace lithostress
           p[dim - 1] = box.lower_bound(dim - 1) + (j + 0.5) * height / ny;
           grid.push_back(p);
         }
-    const auto samples = sample_stresses(
+    auto samples = sample_stresses(
       dof_handler, fe_space, stress_model, griffith, solution, grid, true);
+    if (envelope_strain_rate > 0)
+      add_strength_envelope(samples, stress_model, envelope_strain_rate);
     on_all_ranks(comm, [&]() {
       if (root)
         {

@@ -40,7 +40,8 @@ namespace lithostress
       a.fe_space,
       a.stress_model,
       a.griffith,
-      a.solution);
+      a.solution,
+      profiles.strength_envelope_strain_rate());
   }
 
   template class StressDepthOutput<2>;

@@ -1,5 +1,5 @@
-#include <lithostress/base/input_error.h>
 #include <lithostress/analysis/surface_profile.h>
+#include <lithostress/base/input_error.h>
 #include <lithostress/postprocessors/surface_profile_output.h>
 
 namespace lithostress
@@ -27,7 +27,9 @@ namespace lithostress
                       Patterns::Anything(),
                       "Boundary part whose displacement is written to "
                       "surface_profile.csv (x, u_x, u_y, y in m, sorted by "
-                      "x) each cycle; empty = none.");
+                      "x) each cycle, and in the time loop at each output "
+                      "time to surface_profile-<index>.csv as well (the "
+                      "index of the ParaView file); empty = none.");
     prm.leave_subsection();
   }
 
@@ -46,13 +48,34 @@ namespace lithostress
                                             ConvergenceStudy &,
                                             std::ostream &)
   {
+    write(a, {"surface_profile.csv"});
+  }
+
+  template <int dim>
+  void
+  SurfaceProfileOutput<dim>::output_time(const SimulatorAccess<dim> &a,
+                                         const unsigned int          index,
+                                         const double)
+  {
+    write(a,
+          {"surface_profile-" + Utilities::int_to_string(index, 5) + ".csv",
+           "surface_profile.csv"});
+  }
+
+  template <int dim>
+  void
+  SurfaceProfileOutput<dim>::write(
+    const SimulatorAccess<dim>     &a,
+    const std::vector<std::string> &file_names) const
+  {
     if (boundary == numbers::invalid_boundary_id)
       return;
     const auto profile =
       surface_profile(a.dof_handler, a.fe_space, a.solution, boundary);
     on_all_ranks(a.communicator, [&]() {
       if (a.root())
-        write_surface_profile<dim>(a.path("surface_profile.csv"), profile);
+        for (const std::string &name : file_names)
+          write_surface_profile<dim>(a.path(name), profile);
     });
   }
 

@@ -54,12 +54,15 @@ namespace lithostress
     prm.declare_entry("Top boundary",
                       "top",
                       Patterns::Anything(),
-                      "The boundary part held at the Top temperature.");
+                      "The boundary parts held at the Top temperature, "
+                      "comma separated (the subduction zone's top is "
+                      "`ocean_floor, land`).");
     prm.declare_entry("Base boundary",
                       "base",
                       Patterns::Anything(),
-                      "The boundary part held at the Base temperature; the "
-                      "other boundaries are insulating.");
+                      "The boundary parts held at the Base temperature, "
+                      "comma separated; the other boundaries are "
+                      "insulating.");
     prm.leave_subsection();
   }
 
@@ -73,8 +76,8 @@ namespace lithostress
     heat_production_text = prm.get("Radiogenic heat production");
     top_temperature      = prm.get_double("Top temperature");
     base_temperature     = prm.get_double("Base temperature");
-    top_name             = Utilities::trim(prm.get("Top boundary"));
-    base_name            = Utilities::trim(prm.get("Base boundary"));
+    top_names            = split_list(prm.get("Top boundary"));
+    base_names           = split_list(prm.get("Base boundary"));
     prm.leave_subsection();
     const std::string entry = "Temperature/Steady conduction/";
     if (!(top_temperature > 0))
@@ -161,8 +164,23 @@ namespace lithostress
         }
       return found->second;
     };
-    top_id      = boundary(top_name, "Top boundary");
-    base_id     = boundary(base_name, "Base boundary");
+    top_ids.clear();
+    base_ids.clear();
+    for (const std::string &name : top_names)
+      top_ids.insert(boundary(name, "Top boundary"));
+    for (const std::string &name : base_names)
+      {
+        const types::boundary_id id = boundary(name, "Base boundary");
+        if (top_ids.count(id) > 0)
+          throw_input_error(entry + "Base boundary",
+                            "names `" + name +
+                              "`, which is a Top boundary too");
+        base_ids.insert(id);
+      }
+    if (top_ids.empty() || base_ids.empty())
+      throw_input_error(entry +
+                          (top_ids.empty() ? "Top boundary" : "Base boundary"),
+                        "names no boundary part");
     dof_handler = std::make_unique<DoFHandler<dim>>(*mesh.triangulation);
     solve();
     auto &signals = mesh.triangulation->signals;
@@ -192,17 +210,16 @@ namespace lithostress
     DoFTools::extract_locally_relevant_dofs(*dof_handler, relevant);
     AffineConstraints<double> constraints(relevant);
     DoFTools::make_hanging_node_constraints(*dof_handler, constraints);
+    const Functions::ConstantFunction<dim> top(top_temperature),
+      base(base_temperature);
+    std::map<types::boundary_id, const Function<dim> *> held;
+    for (const types::boundary_id id : top_ids)
+      held[id] = &top;
+    for (const types::boundary_id id : base_ids)
+      held[id] = &base;
     VectorTools::interpolate_boundary_values(*mesh.mapping,
                                              *dof_handler,
-                                             top_id,
-                                             Functions::ConstantFunction<dim>(
-                                               top_temperature),
-                                             constraints);
-    VectorTools::interpolate_boundary_values(*mesh.mapping,
-                                             *dof_handler,
-                                             base_id,
-                                             Functions::ConstantFunction<dim>(
-                                               base_temperature),
+                                             held,
                                              constraints);
     constraints.close();
 

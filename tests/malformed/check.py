@@ -35,6 +35,7 @@ expected = {
     "entry_of_another_law": "Materials/rock/Cohesion",
     "nonlinear_rock_with_frictional_fault": "Materials/lower/Rheology",
     "conduction_unknown_boundary": "Top boundary",
+    "conduction_part_top_and_base": "Temperature/Steady conduction/Base boundary>: names `left`, which is a Top boundary too",
     "conduction_negative_heat_production": "Radiogenic heat production",
     "thermal_coefficient_type_missing": "Coefficient type",
     "negative_fluid_density": "Fluid densities",
@@ -61,6 +62,7 @@ expected = {
     "resultant_profile_not_a_number": "Resultant profile>: the expression <sqrt(x - 5000)> is not a number at",
     "temperature_change_infinite": "Temperature change>: the expression <y < -5000 ? 1/0 : 100> is infinite at",
     "density_infinite": "Density",
+    "time_factor_infinite": "Loads/Line forces/Time factor>: the expression <1/t> is infinite at",
     "reference_column_infinite": "Reference column",
     "fluid_density_infinite": "Fluid densities",
     # Resources.

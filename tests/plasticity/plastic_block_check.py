@@ -38,9 +38,16 @@ The stress is sigma = -P 1 + tau dev(E)/e_II. Asserted to 1e-9 of tau:
    lithostatic pressure P_ref(d) = g sum rho_i h_i (a column of three
    densities whose interval bottoms cross the block) to the pressure of
    the stripped stress, to 1e-9.
+8. Load steps: the block confined laterally under a pressure on its top
+   raised by Loads/Slab pull/Time factor = t/2 to 50 MPa: sigma_yy follows
+   the factor and the stress the closed form of the uniaxial strain at
+   each output, through yield, to 1e-8 (the direct solver's tolerance on an
+   unsymmetric tangent).
+Case 1 also asserts the profile's plastic_strain and yielding columns.
 """
 import math
 import os
+import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -126,8 +133,19 @@ def compare(label, rows, e1, e2, strength, psi=0.0, cutoff=None):
 
 # 1. Pressure-dependent yield, two confinements.
 e1, e2 = -2e-4, 0.5e-4
-rows, _ = simulate("phi30", [])
+rows, _ = simulate("phi30", ["Output/Stress-depth profiles=5"])
 compare("phi = 30 deg, psi = 0", rows, e1, e2, perfect(C0, PHI0))
+# The profile's plastic_strain is gamma = e_II t - tau/(2G) at the end
+# (t = 2 s), the same at every point, and yielding is 1 there.
+tau_end, _ = closed_form(2.0, e1, e2, perfect(C0, PHI0))
+e_ii = math.sqrt(0.5 * sum(d * d for d in (e1 - (e1 + e2) / 3, e2 - (e1 + e2) / 3, -(e1 + e2) / 3)))
+gamma_end = e_ii * 2.0 - tau_end / (2 * G)
+profile = read_csv(os.path.join(os.path.abspath("output_plastic_block_phi30"), "stress_depth_x5.csv"))
+worst = max(abs(r["plastic_strain"] - gamma_end) for r in profile) / gamma_end
+check(len(profile) == 101 and gamma_end > 0 and worst <= 1e-9
+      and all(abs(r["yielding"] - 1) <= 1e-12 for r in profile),
+      "the profile's plastic_strain %.6g is gamma of the closed form to %.1e and yielding is 1 at its %d points"
+      % (gamma_end, worst, len(profile)))
 rows_b, _ = simulate("phi30_confined", strain_sets(e1, 0.0))
 compare("phi = 30 deg, psi = 0, e2 = 0", rows_b, e1, 0.0, perfect(C0, PHI0))
 last_a, last_b = rows[-1], rows_b[-1]
@@ -233,6 +251,67 @@ for r in read_csv(os.path.join(stripped, "stress_depth_x5.csv")):
     worst = max(worst, abs(r["strength_brittle"] - brittle) / brittle)
 check(worst <= 1e-9, "density stripping: strength_brittle with the column's pressure (%.4g to %.4g MPa) "
       "to %.1e" % (column_pressure(15e3) / 1e6, column_pressure(20e3) / 1e6, worst))
+
+# 8. Load steps (Loads/Slab pull/Time factor): the block confined
+# laterally (u_x = 0 on both sides, u_y = 0 at the base) under a pressure
+# p f(t) on its top, f = t/2 (50 MPa at t = 2 s): sigma_yy = -p f(t)
+# exactly, and the strain is uniaxial, eps = diag(0, e, 0), a proportional
+# path whose state at each output is the closed form of the strain
+# e1 = 0, e2 = e (t = 1) with e the root of sigma_yy(e) = -p f(t).
+PRESSURE, WIDTH = 50e6, 10e3
+
+
+def confined(load):
+    def sigma_yy(e):
+        tau, p = closed_form(1.0, 0.0, e, perfect(C0, PHI0))
+        return -p - tau * (2.0 / 3.0) / math.sqrt(1.0 / 3.0)
+    lo, hi = -1.0, 0.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if sigma_yy(mid) < -load:
+            lo = mid
+        else:
+            hi = mid
+    return closed_form(1.0, 0.0, 0.5 * (lo + hi), perfect(C0, PHI0))
+
+
+# The block's input without the top's prescribed displacement (a part
+# that prescribes nothing is refused, so the top leaves the list).
+text = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "plastic_block.prm")).read()
+text = re.sub(r"\n  subsection top\n.*?\n  end", "", text, flags=re.S).replace(
+    "Prescribed displacement parts = left, right, base, top", "Prescribed displacement parts = left, right, base")
+check("subsection top" not in text and "parts = left, right, base\n" in text,
+      "load steps: the block's input without the top's prescribed displacement")
+loaded_prm = os.path.abspath("plastic_block_loaded_top.prm")
+with open(loaded_prm, "w") as f:
+    f.write(text)
+steps_sets = ["Boundary conditions/left/x=0", "Boundary conditions/left/y=",
+              "Boundary conditions/right/x=0", "Boundary conditions/right/y=",
+              "Boundary conditions/base/x=", "Boundary conditions/base/y=0",
+              "Loads/Slab pull/Enabled=true", "Loads/Slab pull/Boundary part=top",
+              "Loads/Slab pull/Vertical force=%.17g" % (PRESSURE * WIDTH),
+              "Loads/Slab pull/Time factor=t/2"]
+loaded_out = os.path.abspath("output_plastic_block_load_steps")
+result = run(loaded_prm, loaded_out, 1, steps_sets)
+rows = read_csv(os.path.join(loaded_out, "point_history.csv"))
+# The issue's bound on Newton's iterations per step (its order is case 5's:
+# a step where points start to yield mid-iteration converges more slowly).
+newton = step_newton_residuals(result.stdout)
+check(len(newton) >= 20 and max(len(r) for r in newton) <= 8,
+      "load steps: %d steps, at most %d Newton iterations each (at most 8)"
+      % (len(newton), max(len(r) for r in newton)))
+worst, yielded = 0.0, 0
+for r in rows:
+    load = PRESSURE * r["time"] / 2
+    tau, p = tau_p(r)
+    ref_tau, ref_p = confined(load)
+    yielded += ref_tau < (1 - 1e-6) * (1 - 2 * nu) / (1 - nu) * load / math.sqrt(3)
+    worst = max(worst, abs(r["s_yy"] + load) / load, abs(tau - ref_tau) / ref_tau,
+                abs(p - ref_p) / ref_p)
+check(len(rows) >= 5 and yielded >= 3 and worst <= 1e-8,
+      "load steps: sigma_yy = -p t/2, tau_II and P of the confined closed form at %d outputs (%d yielding), "
+      "largest relative difference %.1e" % (len(rows), yielded, worst))
+
 record = open(os.path.join(out, "solution_005.pvtu")).read()
 fields = ("effective_viscosity", "strain_rate_II", "yielding", "plastic_strain")
 check(all('Name="%s"' % f in record for f in fields),

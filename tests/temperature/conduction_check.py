@@ -115,4 +115,25 @@ for name, sets in (("quarter annulus", []), ("Gmsh", gmsh)):
     print("%s, adaptive: %.3e K after 1 cycle, %.3e K after 4" % (name, adaptive[0], adaptive[1]))
     check(adaptive[1] < adaptive[0] / 10,
           "%s: adaptive refinement reduces the error by at least 10 over 3 cycles" % name)
+
+# Several parts held at the Top temperature: the subduction zone's top is
+# the ocean floor and the land (prm/subduction_viscoplastic.prm, its
+# elastic t = 0 solve on the coarse mesh). The top of a profile on each
+# part is at 273 K (an insulating land would be far warmer: the base is at
+# 1623 K), the base at 1623 K, and the maximum principle holds between
+# (no heat sources in the oceanic profile; radiogenic heat in the
+# continental crust raises no point above the base's 1623 K here).
+out = os.path.abspath("output_conduction_subduction")
+run(os.path.join(os.path.dirname(SOURCE), "prm", "subduction_viscoplastic.prm"), out, 1,
+    ["Time stepping/Enabled=false", "Mesh refinement/Initial global refinement=0",
+     "Output/Stress-depth profiles=300, 800", "Output/Figures/Enabled=false",
+     "Output/Write ParaView files=false"])
+for x, part in ((300, "ocean_floor"), (800, "land")):
+    profile = sorted(read_csv(os.path.join(out, "stress_depth_x%d.csv" % x)), key=lambda r: r["depth"])
+    top, base = profile[0]["temperature"], profile[-1]["temperature"]
+    inside = [r["temperature"] for r in profile[1:-1]]
+    check(abs(top - 273) <= 1e-9 * 273 and abs(base - 1623) <= 1e-9 * 1623
+          and all(273 < t < 1623 for t in inside),
+          "subduction zone, x = %d km (%s): T = %.10g K at the top, %.10g K at the base, "
+          "%.6g to %.6g K between" % (x, part, top, base, min(inside), max(inside)))
 finish()

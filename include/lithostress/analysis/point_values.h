@@ -26,6 +26,19 @@ namespace lithostress
     /** The temperature [K] (`Temperature/Model`); NaN where the model has
      * none. */
     double temperature = std::numeric_limits<double>::quiet_NaN();
+    /** The accumulated plastic strain (interpolated from its quadrature
+     * points) and the yielding indicator (1 where the last step's return
+     * mapping reached the yield surface at the nearest quadrature point, 0
+     * where not) of the non-linear rock laws (Rheology =
+     * visco-elasto-plastic); NaN where the model keeps neither. */
+    double plastic_strain = std::numeric_limits<double>::quiet_NaN();
+    double yielding       = std::numeric_limits<double>::quiet_NaN();
+    /** The effective viscosity tau_II/(2 strain_rate_II) [Pa s] and the
+     * second invariant of the inelastic strain rate [1/s] of the last
+     * step at the nearest quadrature point, where yielding is given (the
+     * viscosity 0 where nothing flows, as in the ParaView field). */
+    double effective_viscosity = std::numeric_limits<double>::quiet_NaN();
+    double strain_rate_ii      = std::numeric_limits<double>::quiet_NaN();
     /** Whether the point lies in the mesh (only false when outside points
      * are allowed). */
     bool inside = true;

@@ -46,6 +46,14 @@ namespace lithostress
       return positions.empty();
     }
 
+    /** The strain rate [1/s] of the strength envelope (Output/Strength
+     * envelope strain rate; 0: none). */
+    double
+    strength_envelope_strain_rate() const
+    {
+      return envelope_strain_rate;
+    }
+
   private:
     /** x of each line [m] and its label in the file name. */
     std::vector<double>      positions;

@@ -2,6 +2,7 @@
 #define lithostress_loads_line_force_h
 
 #include <lithostress/loads/load.h>
+#include <lithostress/loads/time_factor.h>
 
 #include <vector>
 
@@ -55,6 +56,8 @@ namespace lithostress
 
     std::vector<Point<dim>>     points;
     std::vector<Tensor<1, dim>> forces;
+    /** f(t) on all of them. */
+    TimeFactor time_factor;
   };
 } // namespace lithostress
 

@@ -3,6 +3,7 @@
 
 #include <lithostress/base/parsed_expression.h>
 #include <lithostress/loads/load.h>
+#include <lithostress/loads/time_factor.h>
 
 #include <memory>
 
@@ -50,7 +51,8 @@ namespace lithostress
     void
     balance(const double upthrust) override;
 
-    /** The force per unit length F [N/m] on the part. */
+    /** The force per unit length F [N/m] on the part at the load's time
+     * (the Time factor included). */
     Tensor<1, dim>
     force() const;
 
@@ -82,6 +84,8 @@ namespace lithostress
     /** The vertical pull P [N/m] (downwards) and the dip I [rad]. */
     double vertical_pull = 0;
     double dip           = 0;
+    /** f(t) on the pull. */
+    TimeFactor time_factor;
   };
 } // namespace lithostress
 

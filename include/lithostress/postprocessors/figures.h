@@ -3,8 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <lithostress/base/run_log.h>
 #include <lithostress/analysis/stress_sampling.h>
+#include <lithostress/base/run_log.h>
 
 #include <string>
 
@@ -31,7 +31,9 @@ namespace lithostress
                      const double       length_scale,
                      const std::string &length_unit);
 
-    /** Write the figure data (collective; rank 0 writes). */
+    /** Write the figure data (collective; rank 0 writes), with the
+     * strength envelope at @p envelope_strain_rate [1/s] in
+     * principal_stresses.csv where a rock yields or creeps (0: none). */
     void
     write_data(const std::string                   &directory,
                const std::string                   &title,
@@ -39,7 +41,8 @@ namespace lithostress
                const FiniteElementSpace<dim>       &fe_space,
                const StressModel<dim>              &stress_model,
                const GriffithFailure               &griffith,
-               const TrilinosWrappers::MPI::Vector &solution) const;
+               const TrilinosWrappers::MPI::Vector &solution,
+               const double envelope_strain_rate = 0) const;
 
     /** Run the plotting script on rank 0; its messages go to @p log. */
     void

@@ -25,7 +25,21 @@ namespace lithostress
                    ConvergenceStudy           &study,
                    std::ostream               &progress) override;
 
+    /** At output time @p index of the visco-elastic loop:
+     * surface_profile-<index>.csv (five digits, the index of the ParaView
+     * file of that time), and surface_profile.csv again, so that it holds
+     * the latest time. */
+    void
+    output_time(const SimulatorAccess<dim> &access,
+                const unsigned int          index,
+                const double                time) override;
+
   private:
+    /** Write the profile of the current solution to @p file_names. */
+    void
+    write(const SimulatorAccess<dim>     &access,
+          const std::vector<std::string> &file_names) const;
+
     types::boundary_id boundary = numbers::invalid_boundary_id;
   };
 

@@ -11,6 +11,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -74,13 +75,13 @@ namespace lithostress
     void
     solve();
 
-    std::string conductivity_text, heat_production_text;
-    std::string top_name, base_name;
-    double      top_temperature = 0, base_temperature = 0;
+    std::string              conductivity_text, heat_production_text;
+    std::vector<std::string> top_names, base_names;
+    double                   top_temperature = 0, base_temperature = 0;
 
     TemperatureMesh<dim>                     mesh;
     std::map<types::material_id, double>     conductivity, heat_production;
-    types::boundary_id                       top_id = 0, base_id = 0;
+    std::set<types::boundary_id>             top_ids, base_ids;
     FE_Q<dim>                                fe{2};
     std::unique_ptr<DoFHandler<dim>>         dof_handler;
     TrilinosWrappers::MPI::Vector            temperature;
