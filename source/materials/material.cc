@@ -4,6 +4,7 @@
 #include <lithostress/materials/rheology.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace lithostress
 {
@@ -44,7 +45,7 @@ namespace lithostress
         prm.declare_entry("Young's modulus",
                           "1e11",
                           Patterns::Double(),
-                          "Young's modulus E [Pa], > 0.");
+                          "Young's modulus E [Pa], > 0 and at most 1e20.");
         prm.declare_entry("Poisson's ratio",
                           "0.25",
                           Patterns::Double(),
@@ -103,6 +104,17 @@ namespace lithostress
           throw_input_error(where + "Young's modulus",
                             "must be positive, got " +
                               std::to_string(m.youngs_modulus));
+        // Rocks have 1e9-2e11 Pa; far larger moduli overflow the single
+        // precision of the matrix-free multigrid's levels (3.4e38).
+        if (!(m.youngs_modulus <= 1e20))
+          {
+            std::ostringstream value;
+            value << m.youngs_modulus;
+            throw_input_error(where + "Young's modulus",
+                              "must be at most 1e20 Pa (rocks: 1e9 to 2e11 "
+                              "Pa), got " +
+                                value.str());
+          }
         if (!(m.poissons_ratio > -1.0 && m.poissons_ratio < 0.5))
           throw_input_error(where + "Poisson's ratio",
                             "must lie in (-1, 0.5), got " +

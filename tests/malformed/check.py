@@ -16,6 +16,7 @@ expected = {
     "misspelt_subsection": "Geometri",
     "poisson_ratio_half": "Poisson's ratio",
     "negative_youngs_modulus": "Young's modulus",
+    "youngs_modulus_huge": "Materials/rock/Young's modulus>: must be at most 1e20 Pa (rocks: 1e9 to 2e11 Pa), got 1e+300",
     "missing_mesh_file": "no-such-mesh.msh",
     "unknown_boundary_name": "bottom",
     "material_without_id": "material id 0",

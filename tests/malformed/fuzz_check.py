@@ -13,8 +13,8 @@ no empty message, within a minute. A run that is still going after
 
 The ctest run (fuzz_input) tries a fixed sample: SAMPLE entries of each
 model, each with a value drawn for its kind, by a seeded generator, so
-that the same cases run every time and every model and every kind of
-hostile value is covered. `--all` tries every entry with every value of
+that the same cases run every time and every model is covered, plus one
+case of each kind of entry the draws missed, so that every kind is. `--all` tries every entry with every value of
 its kind (some 4 000 runs; for a review, not for CI), `--sample N` N
 entries per model. Each outcome is
 printed; the summary counts the runs refused, stopped, accepted (still
@@ -92,15 +92,24 @@ def cases(all_cases, sample):
     every entry with every value of its kind, or @p sample entries per
     model, each with one value of its kind."""
     rng = random.Random(SEED)
-    out = []
+    out, every = [], []
     for model in sorted(f for f in os.listdir(MODELS) if f.endswith(".prm")):
         with open(os.path.join(MODELS, model)) as f:
             found = entries(f.read())
+        every += [(model, i, p, v) for i, p, v in found]
         if all_cases:
             out += [(model, i, p, v, h) for i, p, v in found for h in HOSTILE[kind(v)]]
         else:
             for i, p, v in rng.sample(found, min(sample, len(found))):
                 out.append((model, i, p, v, rng.choice(HOSTILE[kind(v)])))
+    # Every kind of entry at least once, whatever the models' sample drew
+    # (a new model shifts the seeded draws): one more case of each missing
+    # kind, drawn from all the models' entries of that kind.
+    for missing in sorted(set(HOSTILE) - {kind(c[3]) for c in out}):
+        candidates = [c for c in every if kind(c[3]) == missing]
+        if candidates:
+            model, i, p, v = rng.choice(candidates)
+            out.append((model, i, p, v, rng.choice(HOSTILE[missing])))
     return out
 
 
