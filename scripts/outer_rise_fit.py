@@ -37,6 +37,8 @@ import os
 import re
 import sys
 
+import numpy as np
+
 GRAVITY = 9.81
 SECONDS_PER_MYR = 365.25 * 86400 * 1e6
 
@@ -209,32 +211,13 @@ def moment_curvature(directory, x, uy, young, poisson):
         near = [(xi - x0, wi) for xi, wi in zip(x, uy) if abs(xi - x0) <= 10e3]
         if len(near) < 3:
             continue
-        # Least-squares parabola w = a + b s + c s^2: kappa = 2c.
-        sums = [sum(si ** k for si, _ in near) for k in range(5)]
-        rhs = [sum(wi * si ** k for si, wi in near) for k in range(3)]
-        matrix = [[sums[i + j] for j in range(3)] for i in range(3)]
-        c = solve3(matrix, rhs)[2]
+        # The least-squares parabola's second coefficient: kappa = 2c.
+        c = np.polyfit([si for si, _ in near], [wi for _, wi in near], 2)[0]
         kappa = 2 * c
         rigidity = -moment / kappa if kappa != 0 else math.nan
         te = (12 * (1 - poisson ** 2) * rigidity / young) ** (1 / 3) if rigidity > 0 else math.nan
         result.append((x0, moment, kappa, te))
     return sorted(result)
-
-
-def solve3(a, b):
-    """Gaussian elimination of a 3 x 3 system."""
-    a = [row[:] + [v] for row, v in zip(a, b)]
-    for i in range(3):
-        p = max(range(i, 3), key=lambda k: abs(a[k][i]))
-        a[i], a[p] = a[p], a[i]
-        for k in range(i + 1, 3):
-            f = a[k][i] / a[i][i]
-            for j in range(i, 4):
-                a[k][j] -= f * a[i][j]
-    x = [0.0] * 3
-    for i in (2, 1, 0):
-        x[i] = (a[i][3] - sum(a[i][j] * x[j] for j in range(i + 1, 3))) / a[i][i]
-    return x
 
 
 def curve(x, trench, r):

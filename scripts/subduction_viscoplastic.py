@@ -49,15 +49,18 @@ def main():
     args = parser.parse_args()
     outdir = os.path.abspath(args.outdir)
     os.makedirs(outdir, exist_ok=True)
-    values, units = {}, {}
+    values, units, thesis = {}, {}, {}
     for label, prm, sets, elastic in RUNS:
         directory = os.path.join(outdir, label)
         rs.run(args.binary, prm, directory, sets, elastic, 1, args.measure_only)
         table = rs.Table()
-        rs.measure(table, "basal_shear", directory, "5Myr", {})
-        for _, quantity, value, _, unit in table.rows:
+        # The thesis's numbers are those of its elastic section 7.6.1.
+        rs.measure(table, "basal_shear", directory, "5Myr",
+                   rs.THESIS[("basal_shear", "elastic")])
+        for _, quantity, value, number, unit in table.rows:
             values.setdefault(quantity, {})[label] = value
             units[quantity] = unit
+            thesis[quantity] = "" if number is None else number
         if label.startswith("viscoplastic"):
             values.setdefault("yielding", {})[label] = 100 * yielding_fraction(directory)
             units["yielding"] = "% of the section"
@@ -71,7 +74,7 @@ def main():
             share = None
             if "viscoplastic_total" in by_run and "viscoplastic_background" in by_run:
                 share = by_run["viscoplastic_total"] - by_run["viscoplastic_background"]
-            row = [quantity, thesis_number(quantity),
+            row = [quantity, thesis.get(quantity, ""),
                    *("%.4g" % by_run[r] if r in by_run and by_run[r] is not None else ""
                      for r in ("elastic", "maxwell_5Myr")),
                    "%.4g" % share if share is not None else "",
@@ -82,25 +85,6 @@ def main():
             print(" | ".join(str(c) for c in row))
     print("wrote", path)
     return 0
-
-
-# The thesis's section 7.6.1 numbers by the text measure() gives them.
-THESIS_BY_TEXT = {
-    "mean horizontal stress in the subducting plate at the left edge (whole thickness)": -4,
-    "mean horizontal stress in the overlying plate at the right edge (whole thickness)": -4,
-    "horizontal stress at the surface above the plate boundary's base (x = 659.7 km)": 4,
-    "largest horizontal compression beneath it (0-35 km)": 10,
-    "mean horizontal stress in the overlying plate left of the load (x = 580 km, above the plate "
-    "boundary)": -4,
-    "horizontal stress at the surface at the right edge": 0,
-    "largest horizontal tension beneath it (0-85 km)": 14,
-    "output nodes failed by the Griffith criterion": 0,
-}
-
-
-def thesis_number(quantity):
-    value = THESIS_BY_TEXT.get(quantity)
-    return "" if value is None else value
 
 
 if __name__ == "__main__":

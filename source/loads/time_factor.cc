@@ -1,6 +1,10 @@
 #include <deal.II/base/utilities.h>
 
+#include <lithostress/base/time_units.h>
 #include <lithostress/loads/time_factor.h>
+
+#include <iomanip>
+#include <sstream>
 
 namespace lithostress
 {
@@ -25,10 +29,11 @@ namespace lithostress
         expression.reset();
         return;
       }
+    std::ostringstream constants;
+    constants << std::setprecision(17) << "yr=" << seconds_per_year
+              << ", Myr=" << 1e6 * seconds_per_year;
     expression =
-      std::make_unique<ParsedExpression<2>>(text,
-                                            "yr=3.15576e7, Myr=3.15576e13",
-                                            entry);
+      std::make_unique<ParsedExpression<2>>(text, constants.str(), entry);
   }
 
   double

@@ -1,5 +1,6 @@
 #include <lithostress/base/input_error.h>
 #include <lithostress/base/parameter_file.h>
+#include <lithostress/base/time_units.h>
 #include <lithostress/time_integration/time_stepping.h>
 
 #include <algorithm>
@@ -11,9 +12,6 @@ namespace lithostress
 {
   namespace
   {
-    /** Seconds per Julian year (365.25 days). */
-    constexpr double seconds_per_year = 365.25 * 24 * 3600;
-
     const std::string section = "Time stepping/";
   } // namespace
 
