@@ -253,17 +253,6 @@ namespace lithostress
     time_stepping.parse_parameters(prm);
     if (time_stepping.enabled && time_stepping.resume)
       Checkpoint::check_resumable(output_directory, prm, communicator);
-    // A non-linear rock law's Newton iteration and the sliding solver's
-    // are not yet one iteration: refused rather than left to diverge.
-    if (time_stepping.enabled && faults.needs_sliding_solver())
-      for (const Material &m : materials.materials())
-        if (stress_model->rheology(m.id).nonlinear())
-          throw_input_error("Materials/" + m.name + "/Rheology",
-                            "is " + m.rheology +
-                              ", whose Newton iteration the time loop cannot "
-                              "yet solve together with a frictional fault or "
-                              "exact contact (Faults/Names); use a linear "
-                              "law (maxwell) with such faults");
     if (time_stepping.enabled)
       creep = std::make_unique<CreepIntegrator<dim>>(
         triangulation,

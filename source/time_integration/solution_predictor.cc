@@ -17,6 +17,13 @@ namespace lithostress
   {
     if (!history.empty() && history.back().size() != solution.size())
       clear();
+    // Newton's iterates of one step share its time: the latest stands for
+    // it, so the history keeps three distinct times to extrapolate from.
+    if (!history.empty() && history_times.back() == time)
+      {
+        history.back() = solution;
+        return;
+      }
     if (history.size() < 3)
       {
         history.push_back(solution);

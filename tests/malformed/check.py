@@ -34,7 +34,6 @@ expected = {
     "temperature_change_unparsable": "Temperature change",
     "conduction_unknown_material": "Thermal conductivity",
     "entry_of_another_law": "Materials/rock/Cohesion",
-    "nonlinear_rock_with_frictional_fault": "Materials/lower/Rheology",
     "conduction_unknown_boundary": "Top boundary",
     "conduction_part_top_and_base": "Temperature/Steady conduction/Base boundary>: names `left`, which is a Top boundary too",
     "conduction_negative_heat_production": "Radiogenic heat production",

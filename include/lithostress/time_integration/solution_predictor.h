@@ -37,7 +37,8 @@ namespace lithostress
     clear();
 
     /** Remember @p solution (owned entries, constraints distributed), the
-     * solution at model time @p time. */
+     * solution at model time @p time; it replaces a solution of the same
+     * time (the previous Newton iterate of a non-linear step). */
     void
     record(const double time, const TrilinosWrappers::MPI::Vector &solution);
 
