@@ -15,6 +15,10 @@
  *    (t = 5), or steps whose lengths differ by more than four (t = 1, 2,
  *    10) take the linear extrapolation of the last two instead; restored
  *    from its three times and solutions it predicts bit for bit.
+ * 6. A solution recorded at the time of the last one (Newton's next
+ *    iterate of the same step) replaces it: after u(1), a wrong u at
+ *    t = 2 and then u(2), the guess at t = 3 is u(3) exactly, and the
+ *    times are 1 and 2.
  * Prints "FAILED" and exits 1 on any failure.
  */
 #include <deal.II/base/index_set.h>
@@ -186,6 +190,16 @@ main(int argc, char *argv[])
   predictor.clear();
   check(!predictor.available(), "a new mesh: no guess");
   check_three_solutions(owned);
+
+  SolutionPredictor iterates;
+  iterates.record(1., linear_in_time(owned, 1.));
+  iterates.record(2., linear_in_time(owned, 7.));
+  iterates.record(2., linear_in_time(owned, 2.));
+  iterates.predict(3., guess);
+  check(error(guess, owned, 3.) < 1e-14 &&
+          iterates.times() == std::vector<double>({1., 2.}),
+        "a solution of the last one's time replaces it (Newton's iterates "
+        "of one step): the guess at t = 3 is u(3), the times 1 and 2");
   if (failed)
     {
       std::cout << "FAILED" << std::endl;
