@@ -149,6 +149,41 @@ namespace lithostress
 
   template <int dim>
   double
+  ViscoElastoPlasticRheology<dim>::flow_pressure_derivative(
+    const double tau,
+    const double temperature,
+    const double pressure) const
+  {
+    double rate = viscosity > 0 ? tau / (2 * viscosity) : 0, derivative = 0;
+    for (const CreepMechanism *m : {&diffusion, &dislocation})
+      if (m->active())
+        {
+          const double mechanism_rate =
+            m->rate_factor(temperature, pressure) * std::pow(tau, m->exponent);
+          rate += mechanism_rate;
+          if (m->activation_volume != 0 && temperature > 0)
+            derivative -= m->activation_volume /
+                          (CreepMechanism::gas_constant * temperature) *
+                          mechanism_rate;
+        }
+    // A bound replaces the rate by τ/(2 η_bound), which P does not move.
+    const double bounded = flow(tau, temperature, pressure).first;
+    return std::abs(bounded - rate) <= 1e-14 * std::abs(rate) ? derivative
+                                                              : 0.0;
+  }
+
+  template <int dim>
+  bool
+  ViscoElastoPlasticRheology<dim>::symmetric_tangent() const
+  {
+    for (const CreepMechanism *m : {&diffusion, &dislocation})
+      if (m->active() && m->activation_volume != 0)
+        return false;
+    return plasticity.symmetric_tangent();
+  }
+
+  template <int dim>
+  double
   ViscoElastoPlasticRheology<dim>::return_stress(const double tau_trial,
                                                  const double k,
                                                  const double temperature,
@@ -213,9 +248,11 @@ namespace lithostress
                                        s.sin_friction * dilation
                                    : 0.0;
       const auto [rate, derivative] = flow(tau, temperature, p);
+      const double d_pressure = flow_pressure_derivative(tau, temperature, p);
       return std::array<double, 3>{
         {tau_trial - k * rate - 2 * shear_modulus * dg - tau,
-         -k * derivative * slope - 2 * shear_modulus - slope,
+         -k * (derivative * slope + d_pressure * dilation) - 2 * shear_modulus -
+           slope,
          slope}};
     };
     double low = 0, high = tau_trial / (2 * shear_modulus), dg = 0;
@@ -261,9 +298,14 @@ namespace lithostress
       }
     const double p = r.pressure + extra_pressure;
     r.tau          = return_stress(tau_trial, k, temperature, p);
-    const double a1 = 1 + k * flow(r.tau, temperature, p).second; // 1 + k dε̇/dτ
-    r.d_tau         = (G / a1) * direction;
-    r.d_pressure = r.tension ? SymmetricTensor<2, dim>() : -K * unit;
+    // g(τ, P) = τ + k ε̇(τ, P) − τ_tr = 0: a1 dτ = dτ_tr − k ∂ε̇/∂P dP,
+    // a1 = 1 + k ∂ε̇/∂τ (the pressure term: an activation volume).
+    const double a1 = 1 + k * flow(r.tau, temperature, p).second;
+    r.d_pressure    = r.tension ? SymmetricTensor<2, dim>() : -K * unit;
+    r.d_tau =
+      (G * direction -
+       k * flow_pressure_derivative(r.tau, temperature, p) * r.d_pressure) /
+      a1;
     if (k == 0 || !plasticity.active() ||
         r.tau <= plasticity.strength(plastic_strain).at(p))
       return r;
@@ -277,15 +319,18 @@ namespace lithostress
     r.pressure += 2 * K * sin_psi * dg;
     const DruckerPrager::Strength s = plasticity.strength(plastic_strain + dg);
     r.tau                           = s.at(r.pressure + extra_pressure);
-    const double a =
-      1 + k * flow(r.tau, temperature, r.pressure + extra_pressure).second;
-    // dτ = sin φ dP_tr + H dΔγ, a dτ + 2G dΔγ = dτ_tr (H = dτ/dΔγ): with
+    const double p_end              = r.pressure + extra_pressure;
+    const double a   = 1 + k * flow(r.tau, temperature, p_end).second;
+    const double k_p = k * flow_pressure_derivative(r.tau, temperature, p_end);
+    // dτ = sin φ dP_tr + H dΔγ, dP = dP_tr + 2K sin ψ dΔγ and
+    // a dτ + k ∂ε̇/∂P dP + 2G dΔγ = dτ_tr (H = dτ/dΔγ): with
     // dτ_tr = G ŝ:dε and dP_tr = −K tr dε (0 under the cut-off).
     const double                  sin_phi = r.tau > 0 ? s.sin_friction : 0.0;
     const SymmetricTensor<2, dim> d_pressure_trial =
       r.tension ? SymmetricTensor<2, dim>() : -K * unit;
     const SymmetricTensor<2, dim> d_increment =
-      (G * direction - a * sin_phi * d_pressure_trial) / (a * slope + 2 * G);
+      (G * direction - (a * sin_phi + k_p) * d_pressure_trial) /
+      (a * slope + k_p * 2 * K * sin_psi + 2 * G);
     r.d_tau      = sin_phi * d_pressure_trial + slope * d_increment;
     r.d_pressure = d_pressure_trial + 2 * K * sin_psi * d_increment;
     return r;

@@ -101,6 +101,22 @@ namespace lithostress
   }
 
   template <int dim>
+  bool
+  ElasticProblem<dim>::start_from_prediction(const double time)
+  {
+    // One solution known: it is the start itself, whose prescribed values
+    // moved to those of @p time would strain the boundary's cells alone.
+    if (!keep_setup || !predictor.extrapolates())
+      return false;
+    update_constraints(time);
+    TrilinosWrappers::MPI::Vector guess;
+    predictor.predict(time, guess);
+    system.constraints.distribute(guess);
+    present_solution = guess;
+    return true;
+  }
+
+  template <int dim>
   void
   ElasticProblem<dim>::make_constraints(const double time)
   {

@@ -144,7 +144,9 @@ namespace lithostress
       model.attach_linearisation(&creep.linearisation());
       return missed;
     };
-    // The first iterate is the solution of the start of the step.
+    // The first iterate is the last solutions' extrapolation to t_new (the
+    // solution of the start of the step where none is known).
+    problem.start_from_prediction(t_new);
     linearise_at_solution(true);
     std::ostringstream residuals;
     for (record.nonlinear_iterations = 1;; ++record.nonlinear_iterations)

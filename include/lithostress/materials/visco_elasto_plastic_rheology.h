@@ -84,13 +84,12 @@ namespace lithostress
     bool
     needs_temperature() const override;
 
-    /** False for non-associated plasticity or softening (DruckerPrager):
-     * the linear solvers then use GMRES. */
+    /** False for non-associated plasticity or softening (DruckerPrager),
+     * and for creep with an activation volume (the creep rate's pressure
+     * derivative couples the deviator to the volume change): the linear
+     * solvers then use GMRES. */
     bool
-    symmetric_tangent() const override
-    {
-      return plasticity.symmetric_tangent();
-    }
+    symmetric_tangent() const override;
 
     /** η/G of the linear viscosity or of the Minimum viscosity; infinite
      * where neither is given (the stress sets the relaxation time). */
@@ -136,6 +135,13 @@ namespace lithostress
     flow(const double tau,
          const double temperature,
          const double pressure) const;
+
+    /** dε̇_II/dP of flow() at the same arguments: −V/(R T) times each
+     * mechanism's rate; 0 where a viscosity bound holds the rate. */
+    double
+    flow_pressure_derivative(const double tau,
+                             const double temperature,
+                             const double pressure) const;
 
   private:
     /** τ with τ + k ε̇_II(τ) = τ_tr (k = 2 G w Δt ≥ 0). */

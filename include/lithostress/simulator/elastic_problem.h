@@ -72,6 +72,14 @@ namespace lithostress
     void
     update_constraints(const double time);
 
+    /** Make the solution the last solutions' extrapolation to model time
+     * @p time (SolutionPredictor), with the prescribed values of @p time:
+     * where a non-linear step's Newton iteration starts. Returns false,
+     * changing nothing, where fewer than two solutions of this mesh are
+     * known (outside the time loop, the first step on a new mesh). */
+    bool
+    start_from_prediction(const double time);
+
     /**
      * Assemble at model time @p time with the laws' history @p history of
      * a time step (nullptr: none): the loads' mesh integrals once per mesh,

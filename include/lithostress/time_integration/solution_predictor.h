@@ -49,6 +49,14 @@ namespace lithostress
       return !history.empty();
     }
 
+    /** Whether two or more solutions are known: the guess is then an
+     * extrapolation, not the last solution itself. */
+    bool
+    extrapolates() const
+    {
+      return history.size() >= 2;
+    }
+
     /** The guess at @p time into @p guess (sized here; owned entries);
      * requires available(). */
     void
