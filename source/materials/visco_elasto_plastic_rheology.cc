@@ -113,38 +113,52 @@ namespace lithostress
   }
 
   template <int dim>
-  std::pair<double, double>
-  ViscoElastoPlasticRheology<dim>::flow(const double tau,
-                                        const double temperature,
-                                        const double pressure) const
+  typename ViscoElastoPlasticRheology<dim>::FlowRate
+  ViscoElastoPlasticRheology<dim>::flow_rate(const double tau,
+                                             const double temperature,
+                                             const double pressure) const
   {
     // The mechanisms in series: their rates add.
-    double rate = 0, derivative = 0;
+    FlowRate f;
     if (viscosity > 0)
       {
-        rate += tau / (2 * viscosity);
-        derivative += 1 / (2 * viscosity);
+        f.rate += tau / (2 * viscosity);
+        f.d_tau += 1 / (2 * viscosity);
       }
     for (const CreepMechanism *m : {&diffusion, &dislocation})
       if (m->active())
         {
           const double a    = m->rate_factor(temperature, pressure);
           const double tn_1 = std::pow(tau, m->exponent - 1);
-          rate += a * tn_1 * tau;
-          derivative += m->exponent * a * tn_1;
+          f.rate += a * tn_1 * tau;
+          f.d_tau += m->exponent * a * tn_1;
+          if (m->activation_volume != 0 && temperature > 0)
+            f.d_pressure -= m->activation_volume /
+                            (CreepMechanism::gas_constant * temperature) * a *
+                            tn_1 * tau;
         }
     // The bounds of the effective viscosity τ/(2 ε̇): at τ = 0 that is
-    // 1/(2 dε̇/dτ).
+    // 1/(2 dε̇/dτ). A bound's rate τ/(2 η_bound) does not depend on P.
     const double effective =
-      tau > 0 ? (rate > 0 ? tau / (2 * rate)
-                          : std::numeric_limits<double>::infinity())
-              : (derivative > 0 ? 1 / (2 * derivative)
-                                : std::numeric_limits<double>::infinity());
+      tau > 0 ? (f.rate > 0 ? tau / (2 * f.rate)
+                            : std::numeric_limits<double>::infinity())
+              : (f.d_tau > 0 ? 1 / (2 * f.d_tau)
+                             : std::numeric_limits<double>::infinity());
     if (maximum_viscosity > 0 && effective > maximum_viscosity)
-      return {tau / (2 * maximum_viscosity), 1 / (2 * maximum_viscosity)};
+      return {tau / (2 * maximum_viscosity), 1 / (2 * maximum_viscosity), 0};
     if (minimum_viscosity > 0 && effective < minimum_viscosity)
-      return {tau / (2 * minimum_viscosity), 1 / (2 * minimum_viscosity)};
-    return {rate, derivative};
+      return {tau / (2 * minimum_viscosity), 1 / (2 * minimum_viscosity), 0};
+    return f;
+  }
+
+  template <int dim>
+  std::pair<double, double>
+  ViscoElastoPlasticRheology<dim>::flow(const double tau,
+                                        const double temperature,
+                                        const double pressure) const
+  {
+    const FlowRate f = flow_rate(tau, temperature, pressure);
+    return {f.rate, f.d_tau};
   }
 
   template <int dim>
@@ -154,22 +168,7 @@ namespace lithostress
     const double temperature,
     const double pressure) const
   {
-    double rate = viscosity > 0 ? tau / (2 * viscosity) : 0, derivative = 0;
-    for (const CreepMechanism *m : {&diffusion, &dislocation})
-      if (m->active())
-        {
-          const double mechanism_rate =
-            m->rate_factor(temperature, pressure) * std::pow(tau, m->exponent);
-          rate += mechanism_rate;
-          if (m->activation_volume != 0 && temperature > 0)
-            derivative -= m->activation_volume /
-                          (CreepMechanism::gas_constant * temperature) *
-                          mechanism_rate;
-        }
-    // A bound replaces the rate by τ/(2 η_bound), which P does not move.
-    const double bounded = flow(tau, temperature, pressure).first;
-    return std::abs(bounded - rate) <= 1e-14 * std::abs(rate) ? derivative
-                                                              : 0.0;
+    return flow_rate(tau, temperature, pressure).d_pressure;
   }
 
   template <int dim>

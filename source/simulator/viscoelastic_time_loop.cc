@@ -146,7 +146,8 @@ namespace lithostress
     };
     // The first iterate is the last solutions' extrapolation to t_new (the
     // solution of the start of the step where none is known).
-    problem.start_from_prediction(t_new);
+    if (settings.newton_from_extrapolation)
+      problem.start_from_prediction(t_new);
     linearise_at_solution(true);
     std::ostringstream residuals;
     for (record.nonlinear_iterations = 1;; ++record.nonlinear_iterations)

@@ -121,6 +121,14 @@ namespace lithostress
                       "Steps with a non-linear rheology: a step whose Newton "
                       "iteration has not converged after this many "
                       "iterations is tried again with half the length.");
+    prm.declare_entry("Newton start",
+                      "extrapolation",
+                      Patterns::Selection("extrapolation|step start"),
+                      "Steps with a non-linear rheology: the first iterate of "
+                      "a step's Newton iteration. extrapolation: the last "
+                      "solutions extrapolated to the step's end (the start "
+                      "on a new mesh); step start: the solution at the start "
+                      "of the step (longer iterations, from farther away).");
     prm.declare_entry("Refinement interval",
                       "0",
                       Patterns::Integer(0),
@@ -164,12 +172,13 @@ namespace lithostress
     fixed_point_tolerance         = prm.get_double("Fixed point tolerance");
     fixed_point_max_iterations =
       prm.get_integer("Maximum fixed point iterations");
-    newton_tolerance        = prm.get_double("Newton tolerance");
-    newton_max_iterations   = prm.get_integer("Maximum Newton iterations");
-    refinement_interval     = prm.get_integer("Refinement interval");
-    checkpoint_interval     = prm.get_integer("Checkpoint interval");
-    resume                  = prm.get_bool("Resume");
-    const std::string times = prm.get("Output times");
+    newton_tolerance          = prm.get_double("Newton tolerance");
+    newton_max_iterations     = prm.get_integer("Maximum Newton iterations");
+    newton_from_extrapolation = prm.get("Newton start") == "extrapolation";
+    refinement_interval       = prm.get_integer("Refinement interval");
+    checkpoint_interval       = prm.get_integer("Checkpoint interval");
+    resume                    = prm.get_bool("Resume");
+    const std::string times   = prm.get("Output times");
     prm.leave_subsection();
 
     output_times.clear();

@@ -144,6 +144,19 @@ namespace lithostress
                              const double pressure) const;
 
   private:
+    /** The creep rate ε̇_II of flow() and its derivatives by τ and P. */
+    struct FlowRate
+    {
+      double rate = 0, d_tau = 0, d_pressure = 0;
+    };
+
+    /** flow() with the pressure derivative: −V/(R T) times each
+     * mechanism's rate, 0 where a viscosity bound holds the rate. */
+    FlowRate
+    flow_rate(const double tau,
+              const double temperature,
+              const double pressure) const;
+
     /** τ with τ + k ε̇_II(τ) = τ_tr (k = 2 G w Δt ≥ 0). */
     double
     return_stress(const double tau_trial,

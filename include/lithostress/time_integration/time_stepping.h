@@ -86,6 +86,9 @@ namespace lithostress
     /** Newton's iteration of a step with a non-linear law. */
     double       newton_tolerance      = 1e-8;
     unsigned int newton_max_iterations = 12;
+    /** `Newton start`: the first iterate is the extrapolated solution
+     * (true) or the step's start (false). */
+    bool newton_from_extrapolation = true;
     /** Refine the mesh every this many steps (0: never in the loop). */
     unsigned int refinement_interval = 0;
     /** Write a checkpoint every this many steps (0: only at the end). */
