@@ -152,24 +152,8 @@ namespace lithostress
     std::ostringstream residuals;
     for (record.nonlinear_iterations = 1;; ++record.nonlinear_iterations)
       {
-        try
-          {
-            record.linear_iterations +=
-              solve_system(false, t_new, &creep.step_history(), false);
-          }
-        catch (const ComputationError &error)
-          {
-            // The faults' sliding solve of a linearised step did not
-            // converge: a shorter step starts nearer its solution.
-            if (!problem.solves_sliding())
-              throw;
-            parts.access.log << "  the sliding solve of Newton's iteration "
-                             << record.nonlinear_iterations
-                             << " of the step to t = " << settings.format(t_new)
-                             << " failed (" << error.what()
-                             << "); the step is halved" << std::endl;
-            return false;
-          }
+        record.linear_iterations +=
+          solve_system(false, t_new, &creep.step_history(), false);
         const double missed = linearise_at_solution(false);
         residuals << (record.nonlinear_iterations > 1 ? ", " : "")
                   << std::setprecision(2) << missed;

@@ -178,14 +178,6 @@ namespace lithostress
       return predictor;
     }
 
-    /** Whether solve() runs the frictional sliding solver (a nonlinear
-     * fault law or exact contact; FaultInterface::needs_sliding_solver). */
-    bool
-    solves_sliding() const
-    {
-      return model.faults.needs_sliding_solver();
-    }
-
     FaultHistory &
     fault_history()
     {
