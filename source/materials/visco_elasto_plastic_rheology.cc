@@ -162,16 +162,6 @@ namespace lithostress
   }
 
   template <int dim>
-  double
-  ViscoElastoPlasticRheology<dim>::flow_pressure_derivative(
-    const double tau,
-    const double temperature,
-    const double pressure) const
-  {
-    return flow_rate(tau, temperature, pressure).d_pressure;
-  }
-
-  template <int dim>
   bool
   ViscoElastoPlasticRheology<dim>::symmetric_tangent() const
   {
@@ -246,11 +236,10 @@ namespace lithostress
       const double slope = tau > 0 ? s.d_cohesion_term + p * s.d_sin_friction +
                                        s.sin_friction * dilation
                                    : 0.0;
-      const auto [rate, derivative] = flow(tau, temperature, p);
-      const double d_pressure = flow_pressure_derivative(tau, temperature, p);
+      const FlowRate f   = flow_rate(tau, temperature, p);
       return std::array<double, 3>{
-        {tau_trial - k * rate - 2 * shear_modulus * dg - tau,
-         -k * (derivative * slope + d_pressure * dilation) - 2 * shear_modulus -
+        {tau_trial - k * f.rate - 2 * shear_modulus * dg - tau,
+         -k * (f.d_tau * slope + f.d_pressure * dilation) - 2 * shear_modulus -
            slope,
          slope}};
     };
@@ -299,12 +288,10 @@ namespace lithostress
     r.tau          = return_stress(tau_trial, k, temperature, p);
     // g(τ, P) = τ + k ε̇(τ, P) − τ_tr = 0: a1 dτ = dτ_tr − k ∂ε̇/∂P dP,
     // a1 = 1 + k ∂ε̇/∂τ (the pressure term: an activation volume).
-    const double a1 = 1 + k * flow(r.tau, temperature, p).second;
-    r.d_pressure    = r.tension ? SymmetricTensor<2, dim>() : -K * unit;
-    r.d_tau =
-      (G * direction -
-       k * flow_pressure_derivative(r.tau, temperature, p) * r.d_pressure) /
-      a1;
+    const FlowRate creep = flow_rate(r.tau, temperature, p);
+    const double   a1    = 1 + k * creep.d_tau;
+    r.d_pressure         = r.tension ? SymmetricTensor<2, dim>() : -K * unit;
+    r.d_tau = (G * direction - k * creep.d_pressure * r.d_pressure) / a1;
     if (k == 0 || !plasticity.active() ||
         r.tau <= plasticity.strength(plastic_strain).at(p))
       return r;
@@ -318,9 +305,10 @@ namespace lithostress
     r.pressure += 2 * K * sin_psi * dg;
     const DruckerPrager::Strength s = plasticity.strength(plastic_strain + dg);
     r.tau                           = s.at(r.pressure + extra_pressure);
-    const double p_end              = r.pressure + extra_pressure;
-    const double a   = 1 + k * flow(r.tau, temperature, p_end).second;
-    const double k_p = k * flow_pressure_derivative(r.tau, temperature, p_end);
+    const double   p_end            = r.pressure + extra_pressure;
+    const FlowRate yield_flow       = flow_rate(r.tau, temperature, p_end);
+    const double   a                = 1 + k * yield_flow.d_tau;
+    const double   k_p              = k * yield_flow.d_pressure;
     // dτ = sin φ dP_tr + H dΔγ, dP = dP_tr + 2K sin ψ dΔγ and
     // a dτ + k ∂ε̇/∂P dP + 2G dΔγ = dτ_tr (H = dτ/dΔγ): with
     // dτ_tr = G ŝ:dε and dP_tr = −K tr dε (0 under the cut-off).

@@ -91,20 +91,22 @@ def faults(output):
     return [fault_rows(os.path.join(output, "fault-%05d.csv" % k)) for k in range(OUTPUTS)]
 
 
-def difference(a, b):
-    """The largest difference of slip (relative to the largest slip) and
-    of the tractions (relative to the largest normal traction) between the
-    fault files @a and @b, over every output time."""
+def difference(a, b, factor=1.0):
+    """The largest difference of @factor times the fault files @a against
+    @b, over every output time: of slip relative to the largest slip, of
+    the tractions relative to the largest normal traction."""
     worst = 0.0
     for fa, fb in zip(a, b):
         if len(fa) != len(fb) or len(fa) == 0:
             return math.inf
-        scale = max(abs(float(r["slip"])) for r in fa)
-        stress = max(abs(float(r["normal_traction"])) for r in fa)
+        scale = factor * max(abs(float(r["slip"])) for r in fa)
+        stress = factor * max(abs(float(r["normal_traction"])) for r in fa)
         for x, y in zip(fa, fb):
-            worst = max(worst, abs(float(x["slip"]) - float(y["slip"])) / scale,
-                        abs(float(x["shear_traction"]) - float(y["shear_traction"])) / stress,
-                        abs(float(x["normal_traction"]) - float(y["normal_traction"])) / stress)
+            worst = max(worst, abs(factor * float(x["slip"]) - float(y["slip"])) / scale,
+                        abs(factor * float(x["shear_traction"]) - float(y["shear_traction"]))
+                        / stress,
+                        abs(factor * float(x["normal_traction"]) - float(y["normal_traction"]))
+                        / stress)
     return worst
 
 
@@ -146,24 +148,6 @@ def linear_laws():
                   % (contact, label, max(len(r) for r in newton), len(newton)))
 
 
-def scaled_difference(a, b, factor):
-    """The largest difference of @factor times the fault of @a against @b,
-    over every output time, relative as in difference()."""
-    worst = 0.0
-    for fa, fb in zip(a, b):
-        if len(fa) != len(fb) or len(fa) == 0:
-            return math.inf
-        scale = factor * max(abs(float(r["slip"])) for r in fa)
-        stress = factor * max(abs(float(r["normal_traction"])) for r in fa)
-        for x, y in zip(fa, fb):
-            worst = max(worst, abs(factor * float(x["slip"]) - float(y["slip"])) / scale,
-                        abs(factor * float(x["shear_traction"]) - float(y["shear_traction"]))
-                        / stress,
-                        abs(factor * float(x["normal_traction"]) - float(y["normal_traction"]))
-                        / stress)
-    return worst
-
-
 def power_law():
     """Items 2-4."""
     out = os.path.abspath("output_faulted_creep_power_law")
@@ -177,7 +161,7 @@ def power_law():
           % (["%.4f" % s for s in slips], sliding, [len(f) for f in power]))
     scaled = os.path.abspath("output_faulted_creep_power_law_scaled")
     run(PRM, scaled, 1, POWER_LAW + SCALED)
-    worst = scaled_difference(power, faults(scaled), 2.0)
+    worst = difference(power, faults(scaled), 2.0)
     check(worst <= 1e-7,
           "power law n = 3: twice the load = twice the stress and slip at a quarter of the time "
           "(2^(n-1)): fault at %d output times to %.1e relative (allowed 1e-7)"

@@ -136,13 +136,6 @@ namespace lithostress
          const double temperature,
          const double pressure) const;
 
-    /** dε̇_II/dP of flow() at the same arguments: −V/(R T) times each
-     * mechanism's rate; 0 where a viscosity bound holds the rate. */
-    double
-    flow_pressure_derivative(const double tau,
-                             const double temperature,
-                             const double pressure) const;
-
   private:
     /** The creep rate ε̇_II of flow() and its derivatives by τ and P. */
     struct FlowRate
